@@ -1,0 +1,49 @@
+// railsim: command-line front end. Parses arguments (CLI11), sets up logging
+// (spdlog, to stderr), runs one subcommand and maps failures to exit codes:
+// 0 success, 2 bad input, 3 numerical failure.
+#include <spdlog/sinks/stdout_color_sinks.h>
+#include <spdlog/spdlog.h>
+
+#include <CLI/CLI.hpp>
+#include <iostream>
+
+#include "cli/commands.hpp"
+#include "core/errors.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"railsim: railway vehicle dynamics with pluggable wheel-rail contact"};
+  app.require_subcommand(1);
+  std::string log_level = "info";
+  app.add_option("--log-level", log_level, "Logging level: trace, debug, info, warn, error, off")
+      ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "critical", "off"}))
+      ->capture_default_str();
+
+  railsim::cli::CommandRunner run;
+  railsim::cli::register_version(app, run);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    // --help and --version are successes; everything else is bad input.
+    return code == 0 ? railsim::kExitSuccess : railsim::kExitBadInput;
+  }
+
+  auto logger = spdlog::stderr_color_mt("railsim");
+  spdlog::set_default_logger(logger);
+  spdlog::set_level(spdlog::level::from_str(log_level));
+  spdlog::set_pattern("[%H:%M:%S.%e] [%^%l%$] %v");
+
+  try {
+    return run ? run() : railsim::kExitSuccess;
+  } catch (const railsim::InputError& e) {
+    spdlog::error("{}", e.what());
+    return railsim::kExitBadInput;
+  } catch (const railsim::NumericalError& e) {
+    spdlog::error("numerical failure: {}", e.what());
+    return railsim::kExitNumericalFailure;
+  } catch (const std::exception& e) {
+    spdlog::critical("internal error: {}", e.what());
+    return 1;
+  }
+}

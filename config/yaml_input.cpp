@@ -1,0 +1,215 @@
+// Checked reading of YAML input files; see yaml_input.hpp.
+#include "config/yaml_input.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+namespace railsim::config {
+
+namespace {
+
+int mark_line(const YAML::Node& n) {
+  if (!n.IsDefined()) return 0;
+  const YAML::Mark m = n.Mark();
+  return m.line >= 0 ? m.line + 1 : 0;
+}
+
+}  // namespace
+
+std::string format_number(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.15g", v);
+  return buf;
+}
+
+InputNode::InputNode(YAML::Node node, std::string file, std::string path)
+    : node_(std::move(node)), file_(std::move(file)), path_(std::move(path)) {}
+
+InputNode InputNode::load_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open file for reading");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return load_string(ss.str(), path);
+}
+
+InputNode InputNode::load_string(const std::string& text, const std::string& name) {
+  try {
+    YAML::Node root = YAML::Load(text);
+    if (!root.IsDefined() || root.IsNull())
+      throw InputError(name + ":1: the file is empty (expected a YAML mapping)");
+    return InputNode(root, name, "");
+  } catch (const YAML::Exception& e) {
+    throw InputError(name + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax error: " + e.msg);
+  }
+}
+
+int InputNode::line() const {
+  const int l = mark_line(node_);
+  return l > 0 ? l : parent_line_;
+}
+
+std::string InputNode::where() const { return file_ + ":" + std::to_string(line()); }
+
+void InputNode::fail(std::string_view what) const {
+  std::string msg = where() + ": ";
+  if (!path_.empty()) msg += "key '" + path_ + "': ";
+  msg += what;
+  throw InputError(msg);
+}
+
+std::string InputNode::text() const {
+  if (node_.IsScalar()) return node_.Scalar();
+  if (node_.IsSequence()) return "a list";
+  if (node_.IsMap()) return "a mapping";
+  return "nothing";
+}
+
+std::string InputNode::child_path(std::string_view key) const {
+  if (path_.empty()) return std::string(key);
+  return path_ + "." + std::string(key);
+}
+
+bool InputNode::has(std::string_view key) const {
+  return node_.IsMap() && node_[std::string(key)].IsDefined();
+}
+
+std::optional<InputNode> InputNode::find(std::string_view key) const {
+  if (!node_.IsMap()) {
+    if (node_.IsNull() || !node_.IsDefined()) return std::nullopt;
+    fail("expected a mapping with key '" + std::string(key) + "' (got " + text() + ")");
+  }
+  YAML::Node child = node_[std::string(key)];
+  if (!child.IsDefined()) return std::nullopt;
+  InputNode out(child, file_, child_path(key));
+  out.parent_line_ = line();
+  return out;
+}
+
+InputNode InputNode::at(std::string_view key) const {
+  auto child = find(key);
+  if (!child) fail("missing required key '" + std::string(key) + "'");
+  if (child->node_.IsNull()) child->fail("has no value");
+  return *child;
+}
+
+std::vector<InputNode> InputNode::elements() const {
+  if (!node_.IsSequence()) fail("expected a list (got " + text() + ")");
+  std::vector<InputNode> out;
+  out.reserve(node_.size());
+  for (std::size_t i = 0; i < node_.size(); ++i) {
+    InputNode child(node_[i], file_, path_ + "[" + std::to_string(i) + "]");
+    child.parent_line_ = line();
+    out.push_back(std::move(child));
+  }
+  return out;
+}
+
+std::vector<std::string> InputNode::keys() const {
+  if (!node_.IsMap()) fail("expected a mapping (got " + text() + ")");
+  std::vector<std::string> out;
+  for (const auto& kv : node_) out.push_back(kv.first.as<std::string>());
+  return out;
+}
+
+void InputNode::allow_only(const std::vector<std::string>& allowed) const {
+  if (!node_.IsMap()) fail("expected a mapping (got " + text() + ")");
+  for (const auto& kv : node_) {
+    const std::string k = kv.first.as<std::string>();
+    bool ok = false;
+    for (const auto& a : allowed) ok = ok || (a == k);
+    if (!ok) {
+      std::string list;
+      for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
+      InputNode bad(kv.second, file_, child_path(k));
+      bad.parent_line_ = mark_line(kv.first);
+      if (bad.line() == 0) bad.parent_line_ = line();
+      bad.fail("unknown key (allowed here: " + list + ")");
+    }
+  }
+}
+
+void InputNode::allow_only(std::initializer_list<std::string_view> allowed) const {
+  std::vector<std::string> v;
+  for (auto a : allowed) v.emplace_back(a);
+  allow_only(v);
+}
+
+double InputNode::as_number() const {
+  if (!node_.IsScalar()) fail("expected a number (got " + text() + ")");
+  const std::string& s = node_.Scalar();
+  double v = 0.0;
+  std::size_t used = 0;
+  try {
+    v = std::stod(s, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  // YAML spellings of NaN and infinity are refused too: inputs must be finite.
+  if (used == 0 || used != s.size() || !std::isfinite(v))
+    fail("expected a finite number (got '" + s + "')");
+  return v;
+}
+
+double InputNode::as_positive() const {
+  const double v = as_number();
+  if (!(v > 0.0)) fail("expected a positive number (got " + format_number(v) + ")");
+  return v;
+}
+
+double InputNode::as_non_negative() const {
+  const double v = as_number();
+  if (!(v >= 0.0)) fail("expected a non-negative number (got " + format_number(v) + ")");
+  return v;
+}
+
+double InputNode::as_in_range(double lo, double hi, bool lo_open, bool hi_open) const {
+  const double v = as_number();
+  const bool ok = (lo_open ? v > lo : v >= lo) && (hi_open ? v < hi : v <= hi);
+  if (!ok) {
+    const std::string range = std::string(lo_open ? "(" : "[") + format_number(lo) + ", " +
+                              format_number(hi) + (hi_open ? ")" : "]");
+    fail("expected a number in " + range + " (got " + format_number(v) + ")");
+  }
+  return v;
+}
+
+long InputNode::as_integer() const {
+  const double v = as_number();
+  if (std::floor(v) != v || std::fabs(v) > 9.0e15) fail("expected a whole number (got " + text() + ")");
+  return static_cast<long>(v);
+}
+
+bool InputNode::as_bool() const {
+  if (node_.IsScalar()) {
+    const std::string& s = node_.Scalar();
+    if (s == "true" || s == "yes" || s == "on") return true;
+    if (s == "false" || s == "no" || s == "off") return false;
+  }
+  fail("expected true or false (got " + text() + ")");
+}
+
+std::string InputNode::as_string() const {
+  if (!node_.IsScalar()) fail("expected a text value (got " + text() + ")");
+  return node_.Scalar();
+}
+
+std::vector<double> InputNode::as_numbers() const {
+  std::vector<double> out;
+  for (const auto& e : elements()) out.push_back(e.as_number());
+  return out;
+}
+
+double InputNode::number_or(std::string_view key, double fallback) const {
+  auto c = find(key);
+  return c ? c->as_number() : fallback;
+}
+
+std::string InputNode::string_or(std::string_view key, const std::string& fallback) const {
+  auto c = find(key);
+  return c ? c->as_string() : fallback;
+}
+
+}  // namespace railsim::config

@@ -1,0 +1,33 @@
+// railsim error types and process exit codes.
+//
+// InputError   : the user gave something the program cannot accept (a bad
+//                YAML key, an out-of-range parameter, a malformed profile).
+//                The message names the file, line and key and the allowed
+//                range:  "file:line: key 'x': expected a positive number (got -3)".
+// NumericalError: the physics or the numerics broke down (NaN, loss of
+//                contact, integrator step collapse, a solver that did not
+//                converge). The message names the time, the place and the model.
+//
+// The command-line program maps them to exit codes 2 and 3.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace railsim {
+
+inline constexpr int kExitSuccess = 0;
+inline constexpr int kExitBadInput = 2;
+inline constexpr int kExitNumericalFailure = 3;
+
+class InputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class NumericalError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+}  // namespace railsim

@@ -1,0 +1,52 @@
+// Checked YAML input: every error names file, line and key and the allowed range.
+#include <catch2/catch.hpp>
+
+#include "config/yaml_input.hpp"
+
+using railsim::InputError;
+using railsim::config::InputNode;
+
+namespace {
+std::string error_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+}  // namespace
+
+TEST_CASE("negative load names file, line, key and range", "[config]") {
+  const auto doc = InputNode::load_string("material:\n  E: 2.1e11\ncases:\n  - id: c1\n    Fz: -3\n", "cases.yaml");
+  const auto cases = doc.at("cases").elements();
+  const std::string msg = error_of([&] { cases[0].positive("Fz"); });
+  CHECK(msg == "cases.yaml:5: key 'cases[0].Fz': expected a positive number (got -3)");
+}
+
+TEST_CASE("missing key and unknown key are errors", "[config]") {
+  const auto doc = InputNode::load_string("material:\n  E: 2.1e11\n  nuu: 0.3\n", "m.yaml");
+  const auto mat = doc.at("material");
+  CHECK(error_of([&] { mat.number("nu"); }) == "m.yaml:2: key 'material': missing required key 'nu'");
+  const std::string unknown = error_of([&] { mat.allow_only({"E", "nu", "mu"}); });
+  CHECK(unknown.find("m.yaml:3: key 'material.nuu': unknown key (allowed here: E, nu, mu)") == 0);
+}
+
+TEST_CASE("ranges, NaN and non-numbers are refused", "[config]") {
+  const auto doc = InputNode::load_string("nu: 0.7\nxi: .nan\nphi: abc\nk: 0.5\n", "x.yaml");
+  CHECK(error_of([&] { doc.in_range("nu", 0.0, 0.5, true, false); }) ==
+        "x.yaml:1: key 'nu': expected a number in (0, 0.5] (got 0.7)");
+  CHECK(error_of([&] { doc.number("xi"); }) == "x.yaml:2: key 'xi': expected a finite number (got '.nan')");
+  CHECK(error_of([&] { doc.number("phi"); }) == "x.yaml:3: key 'phi': expected a finite number (got 'abc')");
+  CHECK(doc.in_range("k", 0.0, 1.0) == Approx(0.5));
+}
+
+TEST_CASE("YAML syntax errors carry the line", "[config]") {
+  const std::string msg = error_of([] { InputNode::load_string("a: 1\nb: [1, 2\n", "bad.yaml"); });
+  CHECK(msg.rfind("bad.yaml:", 0) == 0);
+  CHECK(msg.find("YAML syntax error") != std::string::npos);
+}
+
+TEST_CASE("missing file is an input error", "[config]") {
+  CHECK(error_of([] { InputNode::load_file("/nonexistent/file.yaml"); }).find("cannot open") != std::string::npos);
+}

@@ -1,0 +1,52 @@
+// Helpers shared by the test suites: paths of reference data and a way to run
+// the railsim program and capture its exit code and output.
+#pragma once
+
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace railsim::test {
+
+// ../shared folder (reference data); RAILSIM_SHARED_DIR env var overrides.
+inline std::string shared_dir() {
+  if (const char* env = std::getenv("RAILSIM_SHARED_DIR")) return env;
+  return RAILSIM_SHARED_DIR;
+}
+inline std::string shared_path(const std::string& rel) { return shared_dir() + "/" + rel; }
+// tests/data folder (our own validation data files).
+inline std::string data_path(const std::string& rel) { return std::string(RAILSIM_TEST_DATA_DIR) + "/" + rel; }
+inline std::string source_path(const std::string& rel) { return std::string(RAILSIM_SOURCE_DIR) + "/" + rel; }
+
+struct RunResult {
+  int exit_code = -1;
+  std::string output;  // stdout and stderr together
+};
+
+// Run `railsim <args>` through the shell; args are passed verbatim.
+inline RunResult run_railsim(const std::string& args) {
+  RunResult r;
+  const std::string cmd = std::string("\"") + RAILSIM_BINARY + "\" " + args + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  if (!p) return r;
+  std::array<char, 4096> buf{};
+  std::size_t n = 0;
+  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.output.append(buf.data(), n);
+  const int status = pclose(p);
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+// A fresh temporary folder for one test's outputs.
+inline std::string temp_dir(const std::string& name) {
+  const char* base = std::getenv("TMPDIR");
+  std::string dir = std::string(base ? base : "/tmp") + "/railsim_test_" + name + "_" + std::to_string(::getpid());
+  std::string cmd = "rm -rf '" + dir + "' && mkdir -p '" + dir + "'";
+  if (std::system(cmd.c_str()) != 0) return "/tmp";
+  return dir;
+}
+
+}  // namespace railsim::test
