@@ -24,9 +24,8 @@ Json& Json::set(const std::string& key, Json v) {
 
 Json& Json::push(Json v) {
   if (!std::holds_alternative<Array>(value_)) value_ = Array{};
-  auto& arr = std::get<Array>(value_);
-  arr.push_back(std::move(v));
-  return arr.back();
+  std::get<Array>(value_).push_back(std::move(v));
+  return *this;
 }
 
 Json& Json::operator[](const std::string& key) {

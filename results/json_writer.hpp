@@ -33,7 +33,8 @@ class Json {
   static Json object() { Json j; j.value_ = Object{}; return j; }
   static Json array() { Json j; j.value_ = Array{}; return j; }
 
-  // Object: set (replace or append) a key. Array: append.
+  // Object: set (replace or append) a key and return the member.
+  // Array: append and return the array (for chaining).
   Json& set(const std::string& key, Json v);
   Json& push(Json v);
   // Object member access (creates an empty object member when missing).
