@@ -1,0 +1,89 @@
+// PNG charts through matplotlib; see chart.hpp.
+#include "results/chart.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include <cstdlib>
+#include <filesystem>
+
+#include "results/json_writer.hpp"
+
+#ifndef RAILSIM_PLOT_SCRIPT
+#define RAILSIM_PLOT_SCRIPT "results/plots/render_chart.py"
+#endif
+
+namespace railsim::results {
+
+namespace {
+
+Json numbers(const std::vector<double>& v) {
+  Json a = Json::array();
+  for (double d : v) a.push(d);
+  return a;
+}
+
+std::string shell_quote(const std::string& s) {
+  std::string out = "'";
+  for (char c : s) out += (c == '\'') ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+}  // namespace
+
+bool draw(const Chart& chart, const std::string& png_path) {
+  Json spec = Json::object();
+  spec.set("title", chart.title);
+  spec.set("xlabel", chart.xlabel);
+  spec.set("ylabel", chart.ylabel);
+  spec.set("logx", chart.logx);
+  spec.set("logy", chart.logy);
+  spec.set("output", png_path);
+  Json series = Json::array();
+  for (const auto& s : chart.series) {
+    Json js = Json::object();
+    js.set("label", s.label);
+    js.set("style", s.style);
+    js.set("color", s.color);
+    js.set("x", numbers(s.x));
+    js.set("y", numbers(s.y));
+    series.push(js);
+  }
+  spec.set("series", series);
+  Json lines = Json::array();
+  for (const auto& l : chart.lines) {
+    Json jl = Json::object();
+    jl.set("value", l.value);
+    jl.set("label", l.label);
+    jl.set("color", l.color);
+    jl.set("vertical", l.vertical);
+    lines.push(jl);
+  }
+  spec.set("lines", lines);
+  Json ann = Json::array();
+  for (const auto& a : chart.annotations) {
+    Json ja = Json::object();
+    ja.set("text", a.first);
+    ja.set("x", a.second.first);
+    ja.set("y", a.second.second);
+    ann.push(ja);
+  }
+  spec.set("annotations", ann);
+  const std::string spec_path = png_path + ".json";
+  spec.write_file(spec_path);
+
+  std::string script = RAILSIM_PLOT_SCRIPT;
+  if (!std::filesystem::exists(script)) {
+    spdlog::warn("chart {}: plotting script {} not found; data kept in {}", png_path, script, spec_path);
+    return false;
+  }
+  const std::string python = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+  const std::string cmd = python + " " + shell_quote(script) + " " + shell_quote(spec_path) + " 2>&1";
+  if (std::system(cmd.c_str()) != 0 || !std::filesystem::exists(png_path)) {
+    spdlog::warn("chart {}: rendering failed (is python3-matplotlib installed?); data kept in {}", png_path,
+                 spec_path);
+    return false;
+  }
+  return true;
+}
+
+}  // namespace railsim::results
