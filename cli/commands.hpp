@@ -16,5 +16,6 @@ namespace railsim::cli {
 using CommandRunner = std::function<int()>;
 
 void register_version(CLI::App& app, CommandRunner& run);
+void register_track(CLI::App& app, CommandRunner& run);
 
 }  // namespace railsim::cli

@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
 
   railsim::cli::CommandRunner run;
   railsim::cli::register_version(app, run);
+  railsim::cli::register_track(app, run);
 
   try {
     app.parse(argc, argv);

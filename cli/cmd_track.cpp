@@ -1,0 +1,110 @@
+// `railsim track TRACK.yaml --out track.csv [--step 0.25] [--from s0 --to s1] [--speed-kmh V]`:
+// load a track file and sample its alignment and irregularities for plotting.
+// Columns (SI unless the name says mm): s, x, y, heading, curvature,
+// dcurvature, cant_mm, cant_angle, dcant_angle, the four irregularity channels
+// and the left/right rail positions in mm, their slopes (d/ds, dimensionless),
+// and with --speed-kmh the cant deficiency in mm. Signs: tracks/track.hpp.
+#include <spdlog/spdlog.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cli/commands.hpp"
+#include "config/yaml_input.hpp"
+#include "core/errors.hpp"
+#include "results/csv_writer.hpp"
+#include "tracks/track_file.hpp"
+
+namespace railsim::cli {
+
+namespace {
+
+struct TrackOptions {
+  std::string track_file;
+  std::string out;
+  double step = 0.25;
+  std::optional<double> from, to;
+  std::optional<double> speed_kmh;
+};
+
+int run_track(const TrackOptions& o) {
+  using config::format_number;
+  const tracks::Track track = tracks::load_track(o.track_file);
+  const double s0 = o.from.value_or(0.0);
+  const double s1 = o.to.value_or(track.length());
+  if (!(o.step > 0.0) || !std::isfinite(o.step))
+    throw InputError("--step: expected a positive number (got " + format_number(o.step) + ")");
+  if (!(s1 > s0)) throw InputError("--from/--to: need from < to (got " + format_number(s0) + ", " + format_number(s1) + ")");
+  const double count = std::floor((s1 - s0) / o.step + 1e-9) + 1.0;
+  if (count > 2e7) throw InputError("--step " + format_number(o.step) + " gives " + format_number(count) +
+                                    " rows (limit 2e7); use a larger step or a shorter range");
+  const auto n = static_cast<long>(count);
+
+  spdlog::info("track '{}': {:.3f} m, {} segments, rail spacing {} m, gauge {} m", track.name(), track.length(),
+               track.alignment().segment_count(), track.rail_spacing(), track.gauge());
+  for (int i = 0; i < track.alignment().segment_count(); ++i) {
+    const auto& seg = track.alignment().segment(i);
+    spdlog::info("  segments[{}] {:9s} s = {:9.3f} .. {:9.3f} m, curvature {:.6g} -> {:.6g} 1/m, cant {:.4g} -> {:.4g} mm",
+                 i, seg.kind(), track.alignment().segment_start(i), track.alignment().segment_start(i + 1),
+                 seg.curvature_start(), seg.curvature_end(), seg.cant_start() * 1e3, seg.cant_end() * 1e3);
+  }
+  for (const auto& c : track.irregularities().components()) spdlog::info("  {}", c->describe());
+
+  std::vector<std::string> cols = {"s",           "x",           "y",           "heading",        "curvature",
+                                   "dcurvature",  "cant_mm",     "cant_angle",  "dcant_angle",    "lateral_mm",
+                                   "vertical_mm", "cross_level_mm", "gauge_mm", "left_lateral_mm", "right_lateral_mm",
+                                   "left_vertical_mm", "right_vertical_mm", "lateral_slope", "vertical_slope",
+                                   "cross_level_slope", "gauge_slope"};
+  if (o.speed_kmh) cols.push_back("cant_deficiency_mm");
+  results::CsvWriter csv(o.out, cols, false, 100000);
+  std::array<double, tracks::kChannelCount> maxabs{}, sumsq{};
+  std::vector<double> row(cols.size());
+  for (long j = 0; j < n; ++j) {
+    const double s = std::min(s0 + static_cast<double>(j) * o.step, s1);
+    const tracks::TrackState t = track.at(s);
+    const auto& irr = t.irregularity;
+    std::size_t k = 0;
+    for (double v : {s, t.x, t.y, t.heading, t.curvature, t.dcurvature, t.cant * 1e3, t.cant_angle, t.dcant_angle,
+                     irr.value[0] * 1e3, irr.value[1] * 1e3, irr.value[2] * 1e3, irr.value[3] * 1e3,
+                     irr.left_lateral() * 1e3, irr.right_lateral() * 1e3, irr.left_vertical() * 1e3,
+                     irr.right_vertical() * 1e3, irr.slope[0], irr.slope[1], irr.slope[2], irr.slope[3]})
+      row[k++] = v;
+    if (o.speed_kmh) row[k++] = track.cant_deficiency(s, *o.speed_kmh / 3.6) * 1e3;
+    csv.row(row);
+    for (int c = 0; c < tracks::kChannelCount; ++c) {
+      maxabs[static_cast<std::size_t>(c)] = std::max(maxabs[static_cast<std::size_t>(c)], std::abs(irr.value[static_cast<std::size_t>(c)]));
+      sumsq[static_cast<std::size_t>(c)] += irr.value[static_cast<std::size_t>(c)] * irr.value[static_cast<std::size_t>(c)];
+    }
+  }
+  csv.flush();
+  std::printf("track %s: %.3f m, %d segments, %zu irregularity components\n", track.name().c_str(), track.length(),
+              track.alignment().segment_count(), track.irregularities().components().size());
+  std::printf("sampled s = %.6g .. %.6g m every %.6g m: %ld rows -> %s\n", s0, s1, o.step, n, o.out.c_str());
+  for (tracks::Channel c : tracks::kAllChannels) {
+    const auto i = static_cast<std::size_t>(tracks::index(c));
+    std::printf("  %-12s max |r| = %8.3f mm   rms = %8.3f mm\n", tracks::channel_name(c), maxabs[i] * 1e3,
+                std::sqrt(sumsq[i] / static_cast<double>(n)) * 1e3);
+  }
+  return kExitSuccess;
+}
+
+}  // namespace
+
+void register_track(CLI::App& app, CommandRunner& run) {
+  auto opts = std::make_shared<TrackOptions>();
+  auto* cmd = app.add_subcommand("track", "Sample a track file's alignment and irregularities into a CSV file");
+  cmd->add_option("track", opts->track_file, "Track definition (YAML, e.g. tracks/curve_R300.yaml)")->required();
+  cmd->add_option("--out,-o", opts->out, "Output CSV file")->required();
+  cmd->add_option("--step", opts->step, "Sampling step [m]")->capture_default_str();
+  cmd->add_option("--from", opts->from, "First distance [m] (default 0)");
+  cmd->add_option("--to", opts->to, "Last distance [m] (default: track length)");
+  cmd->add_option("--speed-kmh", opts->speed_kmh, "Add a cant deficiency column for this speed [km/h]");
+  cmd->callback([opts, &run] { run = [opts] { return run_track(*opts); }; });
+}
+
+}  // namespace railsim::cli
