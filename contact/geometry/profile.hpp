@@ -1,0 +1,70 @@
+// Wheel and rail profiles: reading (CONTACT/SIMPACK .prw/.prr, two-column CSV),
+// validation and smooth evaluation.
+//
+// Profile coordinates (CONTACT convention, metres):
+// - y lateral, positive towards the FIELD side (outside of the track);
+// - z positive DOWNWARD: for a wheel, z is the radius increase over the
+//   nominal (tape-circle) radius, r = r0 + z; for a rail, z is the depth below
+//   the profile origin.
+// A wheel's flange therefore lies at negative y (S1002: flange tip at
+// y = -55 mm, back face at y = -70 mm). Points are ordered by increasing y.
+// Evaluation: parametric natural cubic spline in chord length through the
+// points (no smoothing, as CONTACT's reference set-up), giving position, first
+// and second derivatives and curvature (profile_spline.hpp).
+// Bad input (unsorted, duplicated, self-intersecting, too short) throws
+// InputError naming the file and line.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "contact/geometry/profile_spline.hpp"
+
+namespace railsim::contact {
+
+enum class ProfileKind { wheel, rail };
+
+struct ProfileReadOptions {
+  // Length of one file unit in metres (0 = from the file: SIMPACK units.len.f,
+  // or a CSV header with y_mm/z_mm or y_m/z_m columns).
+  double unit = 0.0;
+  bool mirror_y = false;  // mirror y after reading (in addition to the file's own flag)
+  bool z_up = false;      // CSV only: the file's z axis points upward (flip it)
+};
+
+class Profile {
+ public:
+  // Validates and builds the spline. `lines` gives the file line of every point
+  // (for error messages); it may be empty.
+  Profile(ProfileKind kind, std::string source, std::vector<double> y, std::vector<double> z,
+          std::vector<int> lines = {});
+
+  ProfileKind kind() const { return kind_; }
+  const std::string& source() const { return source_; }
+  const std::vector<double>& y() const { return y_; }
+  const std::vector<double>& z() const { return z_; }
+  const ParametricSpline& spline() const { return spline_; }
+  // A copy rotated by `angle` [rad] about the x axis through the profile origin,
+  // (y, z) -> (y cos a + z sin a, -y sin a + z cos a): a positive angle tilts the
+  // top of a rail towards the gauge side (negative y), as a canted rail.
+  Profile rotated(double angle) const;
+  // 64-bit FNV-1a hash of kind and points: part of contact-table cache keys.
+  unsigned long long content_hash() const;
+
+ private:
+  ProfileKind kind_;
+  std::string source_;
+  std::vector<double> y_, z_;
+  ParametricSpline spline_;
+};
+
+// Read a profile file (.prw/.prr SIMPACK/CONTACT format, or .csv/.txt two
+// columns) or a shipped name (see shipped_profile_names()).
+Profile read_profile(const std::string& path_or_name, ProfileKind kind, const ProfileReadOptions& options = {});
+
+// "S1002, UIC60, UIC60_MBench" and the folder that holds them
+// (env RAILSIM_PROFILE_DIR overrides the built-in location).
+std::string shipped_profile_names();
+std::string shipped_profile_dir();
+
+}  // namespace railsim::contact

@@ -1,0 +1,134 @@
+// STRIPES semi-Hertzian normal contact (see semi_hertz.hpp for the method and sources).
+#include "contact/geometry/semi_hertz.hpp"
+
+#include <algorithm>
+#include <boost/math/quadrature/tanh_sinh.hpp>
+#include <cmath>
+#include <cstdio>
+
+#include "contact/hertz.hpp"
+#include "core/errors.hpp"
+
+namespace railsim::contact {
+
+struct SemiHertzWorkspace::Impl {
+  boost::math::quadrature::tanh_sinh<double> quad{8};
+  std::vector<double> g, xl, f;
+};
+
+SemiHertzWorkspace::SemiHertzWorkspace() : impl_(std::make_unique<Impl>()) {}
+SemiHertzWorkspace::~SemiHertzWorkspace() = default;
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+
+// int_{d1}^{d2} int_{-L}^{L} sqrt(1 - x^2/L^2) / sqrt(x^2 + d^2) dx dd.
+double strip_kernel(boost::math::quadrature::tanh_sinh<double>& quad, double L, double d1, double d2) {
+  auto f = [&](double th) {
+    const double s = std::sin(th), c = std::cos(th);
+    const double ls = L * s;
+    if (ls <= 0.0) return 0.0;
+    return L * c * c * (std::asinh(d2 / ls) - std::asinh(d1 / ls));
+  };
+  return 2.0 * quad.integrate(f, 0.0, kPi / 2, 1e-9);
+}
+}  // namespace
+
+SemiHertzResult semi_hertz_from_load(const GapProfile& gap, double Fn, const Material& material,
+                                     SemiHertzWorkspace& ws) {
+  const std::size_t n = gap.q.size();
+  if (n < 5 || gap.h.size() != n || gap.A.size() != n)
+    throw InputError("semi_hertz: gap profile needs at least 5 points with h and A at each");
+  if (!(Fn > 0.0 && std::isfinite(Fn))) throw InputError("semi_hertz: normal load must be positive and finite");
+  const double dq = (gap.q.back() - gap.q.front()) / static_cast<double>(n - 1);
+  if (!(dq > 0.0)) throw InputError("semi_hertz: gap profile q must increase");
+  auto& im = ws.impl();
+  im.g.assign(n, 0.0);
+  im.xl.assign(n, 0.0);
+  im.f.assign(n, 0.0);
+
+  std::size_t k0 = 0;
+  for (std::size_t j = 0; j < n; ++j)
+    if (std::isfinite(gap.h[j]) && (gap.h[j] < gap.h[k0] || !std::isfinite(gap.h[k0]))) k0 = j;
+  const double hmin = gap.h[k0];
+  const double A0 = gap.A[k0];
+  if (!(A0 > 0.0)) throw InputError("semi_hertz: longitudinal curvature A must be positive at the contact point");
+  auto hrel = [&](std::size_t j) { return std::isfinite(gap.h[j]) ? gap.h[j] - hmin : 1e30; };
+  // Equivalent lateral curvature over the part around q0 where h - hmin < limit.
+  auto fit_B = [&](double limit) {
+    double num = 0.0, den = 0.0;
+    for (int dir : {-1, 1}) {
+      for (std::size_t j = k0;; j = static_cast<std::size_t>(static_cast<long>(j) + dir)) {
+        const double hr = hrel(j);
+        if (hr >= limit) break;
+        const double d2 = (gap.q[j] - gap.q[k0]) * (gap.q[j] - gap.q[k0]);
+        num += hr * d2;
+        den += d2 * d2;
+        if ((dir < 0 && j == 0) || (dir > 0 && j + 1 == n)) break;
+      }
+    }
+    return den > 0.0 ? num / den : 0.0;
+  };
+  const double Bmin = 1e-3 * A0;
+  double Be = std::max(fit_B(4.0 * dq * dq * A0 + 1e-12), Bmin);
+  double delta = hertz_from_load(A0, Be, Fn, material).approach;
+  const double Estar = material.combined_modulus();
+
+  SemiHertzResult r;
+  double P = 0.0, I1 = 0.0, eps = 0.0, cA = 0.0;
+  for (int it = 1; it <= 60; ++it) {
+    Be = std::max(fit_B(delta), Bmin);
+    const HertzPatch h1 = hertz_from_load(A0, Be, 1.0, material);
+    eps = Be * h1.b * h1.b / h1.approach;
+    cA = Be * h1.b * h1.b / (A0 * h1.a * h1.a);
+    const double dv = eps * delta;
+    I1 = 0.0;
+    double I2 = 0.0;
+    for (std::size_t j = 0; j < n; ++j) {
+      const double g = dv - hrel(j);
+      if (g <= 0.0 || !(gap.A[j] > 0.0)) {
+        im.g[j] = im.xl[j] = im.f[j] = 0.0;
+        continue;
+      }
+      im.g[j] = g;
+      im.xl[j] = std::sqrt(g / (cA * gap.A[j]));
+      im.f[j] = std::sqrt(g / dv);
+      I1 += im.f[j] * 0.5 * kPi * im.xl[j] * dq;
+      const double d = gap.q[j] - gap.q[k0];
+      I2 += im.f[j] * strip_kernel(im.quad, im.xl[j], d - 0.5 * dq, d + 0.5 * dq);
+    }
+    if (!(I1 > 0.0 && I2 > 0.0))
+      throw NumericalError("semi_hertz: empty contact patch (check the gap profile around the contact point)");
+    P = kPi * Estar * delta / I2;
+    const double N = P * I1;
+    r.iterations = it;
+    const double ratio = Fn / N;
+    if (std::abs(ratio - 1.0) < 1e-9) break;
+    delta *= std::pow(ratio, 2.0 / 3.0);
+    if (it == 60) throw NumericalError("semi_hertz: load iteration did not converge in 60 steps");
+  }
+  r.Fn = Fn;
+  r.approach = delta;
+  r.virtual_penetration = eps * delta;
+  r.B_equivalent = Be;
+  double qlo = 1e30, qhi = -1e30;
+  bool in_part = false;
+  for (std::size_t j = 0; j < n; ++j) {
+    if (im.f[j] > 0.0) {
+      r.area += 2.0 * im.xl[j] * dq;
+      r.p_max = std::max(r.p_max, P * im.f[j]);
+      r.length = std::max(r.length, 2.0 * im.xl[j]);
+      qlo = std::min(qlo, gap.q[j] - 0.5 * dq);
+      qhi = std::max(qhi, gap.q[j] + 0.5 * dq);
+      r.strips.push_back({gap.q[j], im.xl[j], P * im.f[j]});
+      if (!in_part) ++r.parts;
+      in_part = true;
+    } else {
+      in_part = false;
+    }
+  }
+  r.width = qhi - qlo;
+  return r;
+}
+
+}  // namespace railsim::contact

@@ -1,0 +1,143 @@
+// Wheel-rail contact geometry of a wheelset on a straight track: profile
+// placement and the rigid contact search.
+//
+// Frames and signs (../shared/docs/architecture.md): track frame x forward,
+// y to the LEFT, z UP. Wheelset pose: lateral shift y (positive to the left),
+// vertical position z of the axle centre, roll phi about x (positive lifts the
+// left wheel), yaw psi about z (positive turns the front to the left).
+// Wheel point in wheelset axes X_w = (r sin(theta), sigma (d + s), -r cos(theta))
+// with sigma = +1 left / -1 right, s the wheel-profile lateral coordinate (field
+// side positive), d = flange_back/2 - back_face, r = r0 + F(s); track position
+// P = (0, y, z) + Rz(psi) Rx(phi) X_w.
+// Yaw: the contact locus method -- for each wheel circle the point whose
+// surface normal has no longitudinal component (the only candidates for contact
+// with a rail that is straight along x): sin(theta) cos(psi) -
+// sin(psi) sin(phi) cos(theta) = -r'(y_w) cos(phi) sin(psi) (e.g. Shabana,
+// Zaazaa & Sugiyama 2008, "Railroad vehicle dynamics", ch. 4).
+// Rigid contact: the minimum VERTICAL gap between the locus and the rail; at a
+// minimum the slopes agree, so the normals coincide. Every other local minimum
+// whose gap is below SearchOptions::second_gap_max is reported too (two-point
+// contact, with its gap). Placement: gauge measured gauge_depth below the top of
+// the (canted) rail; flange back faces flange_back apart; wheel profile origin
+// (tape circle, radius r0) at back_face from the back face.
+// Per contact: rolling radius r, contact angle delta = rotation about the track
+// x axis from +z to the contact normal (the rail's outward normal), so tread
+// contact on the left wheel is slightly positive, flange contact on the left
+// wheel large positive and on the right wheel large negative (CONTACT's sign for
+// its left/right configurations). Relative curvatures (physics-reference 1.1):
+// A = cos(gamma_w) / (2 r) with gamma_w = atan(dF/ds) the wheel slope,
+// B = (kappa_rail - kappa_wheel)/2 with the signed profile curvatures
+// (convex rail crown positive, concave wheel tread positive). The normal gap
+// around the point is approximated by vertical gap x cos(delta) measured along
+// the contact plane (exact to second order).
+// Units SI (m, rad).
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "contact/geometry/profile.hpp"
+
+namespace railsim::contact {
+
+enum class Side { left = 0, right = 1 };
+
+struct TrackSetup {
+  double gauge = 1.435;        // [m] between gauge points of the rails
+  double gauge_depth = 0.014;  // [m] below the top of the rail where the gauge is measured
+  double flange_back = 1.360;  // [m] distance between the flange back faces
+  double back_face = -0.070;   // [m] wheel-profile y of the flange back face
+  double r0 = 0.46;            // [m] wheel radius at the profile origin (tape circle)
+  double inclination = 0.0;    // [rad] rail cant applied to the rail profile (atan(1/40)); 0 = none
+  // Throws InputError naming the field and its allowed range.
+  void validate() const;
+};
+
+struct SearchOptions {
+  double second_gap_max = 1.0e-4;  // [m] report extra local minima with gap below this
+  double wheel_step = 5.0e-5;      // [m] wheel sampling step (arc length) before refinement
+  double rail_step = 5.0e-6;       // [m] rail height grid step
+};
+
+struct ContactPoint {
+  double x = 0.0, y = 0.0, z = 0.0;  // position in the track frame [m]
+  double y_wheel = 0.0;              // wheel-profile lateral coordinate (field side +) [m]
+  double y_rail = 0.0;               // rail-profile lateral coordinate, file axes (field side +) [m]
+  double radius = 0.0;               // rolling radius [m]
+  double angle = 0.0;                // contact angle [rad] (see header)
+  double A = 0.0, B = 0.0;           // relative curvatures [1/m]
+  double gap = 0.0;                  // undeformed normal gap [m] (0 for the touching point)
+};
+
+struct WheelContact {
+  static constexpr int kMaxPoints = 3;
+  int n = 0;                                // number of points (>= 1)
+  std::array<ContactPoint, kMaxPoints> p;  // p[0] = smallest gap, then increasing gap
+};
+
+struct WheelsetContact {
+  double y = 0.0, yaw = 0.0, roll = 0.0;
+  std::array<double, 2> z{};  // axle-centre height that makes each wheel touch [m] (equal when roll is solved)
+  std::array<WheelContact, 2> wheel;  // [Side]
+};
+
+// Undeformed normal gap across the contact plane around a point: q lateral in the
+// contact plane (positive towards track +y projected), h(q) >= 0, and the local
+// longitudinal curvature A(q).
+struct GapProfile {
+  double angle = 0.0;      // contact angle of the plane [rad]
+  std::vector<double> q;   // [m], uniform
+  std::vector<double> h;   // [m]
+  std::vector<double> A;   // [1/m]
+};
+
+class WheelRailGeometry {
+ public:
+  WheelRailGeometry(const Profile& wheel, const Profile& rail, const TrackSetup& setup,
+                    const SearchOptions& options = {});
+
+  // Wheelset at shift y and yaw: roll and height such that both wheels touch.
+  // InputError when |y| or |yaw| is out of range or the profiles stop touching
+  // inside their defined ranges (flange climbing off the profile ends).
+  WheelsetContact solve(double y, double yaw = 0.0) const;
+  // Prescribed roll: each wheel lowered on its own until it touches (as CONTACT
+  // does for a half-wheelset with prescribed roll).
+  WheelsetContact at_roll(double y, double yaw, double roll) const;
+  // Contacts of one wheel at a given axle height (gaps not shifted).
+  WheelContact wheel_contacts(Side side, double y, double z, double roll, double yaw) const;
+  // Minimum vertical gap of one wheel with the axle centre at height z.
+  double min_gap(Side side, double y, double z, double roll, double yaw) const;
+  // Gap profile around point `p` of wheel `side` at the given pose (n points over +-halfwidth).
+  GapProfile gap_profile(Side side, const ContactPoint& p, double y, double z, double roll, double yaw,
+                         double halfwidth, int n) const;
+
+  const TrackSetup& setup() const { return setup_; }
+  double rail_offset() const { return rail_offset_; }  // rail-profile origin |y| in the track [m]
+  double nominal_height() const { return setup_.r0; }  // reference axle height (rail origin at z = 0)
+
+ private:
+  struct WheelSample {
+    double t, s, F, Fs;  // chord parameter, lateral, radius increase, dF/ds
+  };
+  struct LocusPoint {
+    double x, y, z, gap;
+  };
+  LocusPoint locus(Side side, double s, double F, double Fs, double y, double z, double cr, double sr, double cy,
+                   double sy) const;
+  double rail_depth(double u) const;  // rail z (down) at placed-profile lateral u; +inf outside
+  double rail_t(double u) const;
+  double refine(Side side, std::size_t k, double y, double z, double roll, double yaw, double& t_out) const;
+  void check_pose(double y, double yaw) const;
+  ContactPoint make_point(Side side, double t, double y, double z, double roll, double yaw) const;
+
+  TrackSetup setup_;
+  SearchOptions options_;
+  Profile wheel_, rail_;  // rail already rotated by the inclination
+  double d_ = 0.0;            // wheel-profile origin |y_w| in wheelset axes
+  double rail_offset_ = 0.0;  // rail-profile origin |y| in the track
+  std::vector<WheelSample> samples_;
+  double u0_ = 0.0, du_ = 0.0;
+  std::vector<double> rail_z_, rail_tgrid_;
+};
+
+}  // namespace railsim::contact
