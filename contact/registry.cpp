@@ -8,11 +8,22 @@
 namespace railsim::contact {
 
 // Factories, defined in the models' own files.
-// (none yet)
+std::unique_ptr<TangentialModel> make_linear_theory(const TangentialModelOptions&);
+std::unique_ptr<TangentialModel> make_linear_sat(const TangentialModelOptions&);
+std::unique_ptr<TangentialModel> make_vermeulen_johnson(const TangentialModelOptions&);
+std::unique_ptr<TangentialModel> make_she(const TangentialModelOptions&);
+std::unique_ptr<TangentialModel> make_chopaya(const TangentialModelOptions&);
+std::unique_ptr<TangentialModel> make_polach(const TangentialModelOptions&);
 
 const std::vector<TangentialModelEntry>& tangential_models() {
   static const std::vector<TangentialModelEntry> table = {
       // {"name", "one-line description", &factory},
+      {"linear", "Kalker's linear theory (no saturation; valid for small creepage)", &make_linear_theory},
+      {"linear_sat", "Kalker's linear theory with Coulomb cut-off at mu Fz", &make_linear_sat},
+      {"vermeulen_johnson", "Vermeulen-Johnson cubic saturation of Kalker's forces, no spin", &make_vermeulen_johnson},
+      {"she", "Shen-Hedrick-Elkins cubic saturation incl. linear spin term", &make_she},
+      {"chopaya", "exponential saturation with spin via reduced creepage (reconstruction of CHOPAYA)", &make_chopaya},
+      {"polach", "Polach (1999/2005) with spin; kA = kS = 1, constant friction by default", &make_polach},
   };
   return table;
 }
