@@ -99,7 +99,7 @@ std::vector<std::unique_ptr<Segment>> build_segments(const InputNode& list, cons
   for (std::size_t i = 0; i < items.size(); ++i) {
     // A fresh node with an empty key path so that messages read "key 'length'".
     const InputNode n(items[i].raw(), file, "");
-    std::string label = "segments[" + std::to_string(i) + "]";
+    std::string label = items[i].path();  // "segments[2]", or "track.segments[2]" when embedded
     try {
       if (n.is_map() && n.has("type") && n.raw()["type"].IsScalar())
         label += " (" + n.raw()["type"].Scalar() + ")";
@@ -172,7 +172,7 @@ Track load_track(const InputNode& root, const std::string& base_dir, const std::
     const auto items = irr->elements();
     for (std::size_t i = 0; i < items.size(); ++i) {
       const InputNode n(items[i].raw(), root.file(), "");
-      std::string label = "irregularities[" + std::to_string(i) + "]";
+      std::string label = items[i].path();
       try {
         if (!n.is_map()) n.fail("expected a mapping with a 'type' key (got " + n.text() + ")");
         const InputNode type = n.at("type");
