@@ -71,7 +71,7 @@ std::vector<std::array<double, 3>> integrate_curvature(const Alignment& a, const
 
 }  // namespace
 
-TEST_CASE("curvature, cant and their rates are continuous at the joints", "[tracks][alignment]") {
+TEST_CASE("curvature and cant and their rates are continuous at the joints", "[tracks][alignment]") {
   for (TransitionShape shape : {TransitionShape::linear, TransitionShape::bloss, TransitionShape::cosine}) {
     const Alignment a = reverse_curve(shape);
     double worst_k = 0, worst_E = 0, worst_psi = 0, worst_p = 0;

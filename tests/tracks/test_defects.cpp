@@ -17,7 +17,7 @@ IrregularityState eval(const IrregularityComponent& c, double s) {
 }
 }  // namespace
 
-TEST_CASE("cosine bump: peak, zero ends, slope", "[tracks][defects]") {
+TEST_CASE("cosine bump: peak and zero ends and slope", "[tracks][defects]") {
   const CosineDefect d(Channel::lateral, 80.0, 20.0, 0.010);
   CHECK(d.s_begin() == 80.0);
   CHECK(d.s_end() == 100.0);

@@ -127,7 +127,7 @@ TEST_CASE("synthesised variance matches the band variance of the PSD", "[tracks]
   }
 }
 
-TEST_CASE("same seed gives the same irregularity bit for bit, another seed another one", "[tracks][psd_synthesis]") {
+TEST_CASE("same seed gives the same irregularity bit for bit and another seed another one", "[tracks][psd_synthesis]") {
   const TrackSpectrum sp = TrackSpectrum::named("fra_5");
   SynthesisOptions o;
   o.s_end = 3000;
@@ -164,7 +164,7 @@ TEST_CASE("same seed gives the same irregularity bit for bit, another seed anoth
   }
 }
 
-TEST_CASE("slopes are the derivative of the values; interpolation and tapers", "[tracks][psd_synthesis]") {
+TEST_CASE("slopes are the derivative of the values and interpolation and tapers hold", "[tracks][psd_synthesis]") {
   const TrackSpectrum sp = TrackSpectrum::named("erri_high");
   SynthesisOptions o;
   o.s_begin = 100;

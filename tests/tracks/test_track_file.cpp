@@ -147,7 +147,7 @@ TEST_CASE("a measured irregularity and a twist load from YAML", "[tracks][track_
   CHECK(t.irregularities().components().size() == 2);
 }
 
-TEST_CASE("railsim track: samples a file; bad files exit with code 2 naming the segment", "[tracks][track_file][cli]") {
+TEST_CASE("railsim track samples a file and bad files exit with code 2 naming the segment", "[tracks][track_file][cli]") {
   const std::string dir = railsim::test::temp_dir("tracks_cli");
   const std::string out = dir + "/twist.csv";
   const auto ok = railsim::test::run_railsim("track '" + source_path("tracks/curve_twist.yaml") + "' --out '" + out +
