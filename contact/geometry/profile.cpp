@@ -220,7 +220,7 @@ Profile::Profile(ProfileKind kind, std::string source, std::vector<double> y, st
   spline_ = ParametricSpline(y_, z_);
 }
 
-Profile Profile::rotated(double angle) const {
+Profile Profile::rotated(double angle, const std::string& new_source) const {
   std::vector<double> y(y_.size()), z(z_.size());
   const double c = std::cos(angle), s = std::sin(angle);
   for (std::size_t i = 0; i < y_.size(); ++i) {
@@ -232,7 +232,7 @@ Profile Profile::rotated(double angle) const {
   std::size_t b = 0, e = y.size();
   while (b + 1 < e && y[b + 1] < y[b]) ++b;
   while (e - 1 > b && y[e - 1] < y[e - 2]) --e;
-  return Profile(kind_, source_ + " (rotated)", std::vector<double>(y.begin() + static_cast<long>(b), y.begin() + static_cast<long>(e)),
+  return Profile(kind_, new_source.empty() ? source_ + " (rotated)" : new_source, std::vector<double>(y.begin() + static_cast<long>(b), y.begin() + static_cast<long>(e)),
                  std::vector<double>(z.begin() + static_cast<long>(b), z.begin() + static_cast<long>(e)));
 }
 
@@ -257,16 +257,18 @@ std::string shipped_profile_dir() {
   return RAILSIM_PROFILE_DIR;
 }
 
-std::string shipped_profile_names() { return "S1002 (wheel), UIC60 (rail, upright), UIC60_MBench (rail, canted 1/40)"; }
+std::string shipped_profile_names() {
+  return "S1002 (wheel), UIC60 (rail, upright), UIC60_MBench (rail, canted 1/40), UIC60_true (rail, upright, CONTACT testbank)";
+}
 
 Profile read_profile(const std::string& path_or_name, ProfileKind kind, const ProfileReadOptions& options) {
   std::string path = path_or_name;
   const std::string lname = lower(path_or_name);
   if (lname == "s1002") path = shipped_profile_dir() + "/MBench_S1002_v3.prw";
-  else if (lname == "uic60") path = shipped_profile_dir() + "/uic60_true.prr";
-  else if (lname == "uic60_mbench") path = shipped_profile_dir() + "/MBench_UIC60_v3.prr";
+  else if (lname == "uic60" || lname == "uic60_mbench") path = shipped_profile_dir() + "/MBench_UIC60_v3.prr";
+  else if (lname == "uic60_true") path = shipped_profile_dir() + "/uic60_true.prr";
   if (lname == "s1002" && kind != ProfileKind::wheel) fail(path_or_name, "S1002 is a wheel profile, not a rail profile");
-  if ((lname == "uic60" || lname == "uic60_mbench") && kind != ProfileKind::rail)
+  if ((lname == "uic60" || lname == "uic60_mbench" || lname == "uic60_true") && kind != ProfileKind::rail)
     fail(path_or_name, "UIC60 is a rail profile, not a wheel profile");
 
   std::ifstream in(path);
@@ -298,7 +300,11 @@ Profile read_profile(const std::string& path_or_name, ProfileKind kind, const Pr
     std::reverse(raw.z.begin(), raw.z.end());
     std::reverse(raw.lines.begin(), raw.lines.end());
   }
-  return Profile(kind, path, std::move(raw.y), std::move(raw.z), std::move(raw.lines));
+  Profile p(kind, path, std::move(raw.y), std::move(raw.z), std::move(raw.lines));
+  // "UIC60": the Manchester-benchmark UIC60 (canted 1/40 in its file) turned
+  // upright, so that --inclination 1/40 reproduces the benchmark set-up exactly.
+  if (lname == "uic60") return p.rotated(-std::atan(1.0 / 40.0), "UIC60 (MBench_UIC60_v3.prr turned upright by -1/40)");
+  return p;
 }
 
 }  // namespace railsim::contact

@@ -47,7 +47,7 @@ class Profile {
   // A copy rotated by `angle` [rad] about the x axis through the profile origin,
   // (y, z) -> (y cos a + z sin a, -y sin a + z cos a): a positive angle tilts the
   // top of a rail towards the gauge side (negative y), as a canted rail.
-  Profile rotated(double angle) const;
+  Profile rotated(double angle, const std::string& new_source = "") const;
   // 64-bit FNV-1a hash of kind and points: part of contact-table cache keys.
   unsigned long long content_hash() const;
 
@@ -62,7 +62,11 @@ class Profile {
 // columns) or a shipped name (see shipped_profile_names()).
 Profile read_profile(const std::string& path_or_name, ProfileKind kind, const ProfileReadOptions& options = {});
 
-// "S1002, UIC60, UIC60_MBench" and the folder that holds them
+// Shipped names: S1002 (wheel, MBench_S1002_v3); UIC60 (the Manchester-benchmark
+// rail turned upright by -1/40, to be used with inclination 1/40 or 1/20);
+// UIC60_MBench (the same file as given, already canted 1/40: inclination none);
+// UIC60_true (CONTACT testbank upright UIC60 with vertical sides). Also
+// shipped_profile_names() and the folder that holds them
 // (env RAILSIM_PROFILE_DIR overrides the built-in location).
 std::string shipped_profile_names();
 std::string shipped_profile_dir();

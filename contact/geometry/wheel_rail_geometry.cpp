@@ -59,6 +59,7 @@ WheelRailGeometry::WheelRailGeometry(const Profile& wheel, const Profile& rail, 
   if (!(options_.wheel_step > 0 && options_.rail_step > 0 && options_.second_gap_max >= 0))
     throw InputError("contact search options: steps must be positive and second_gap_max non-negative");
   d_ = 0.5 * setup_.flange_back - setup_.back_face;
+  tip_ = wheel_.y()[static_cast<std::size_t>(std::max_element(wheel_.z().begin(), wheel_.z().end()) - wheel_.z().begin())];
 
   // Wheel samples, uniform in chord length.
   const auto& ws = wheel_.spline();
@@ -234,7 +235,7 @@ WheelContact WheelRailGeometry::wheel_contacts(Side side, double y, double z, do
     const auto& w = samples_[k];
     g[k] = locus(side, w.s, w.F, w.Fs, y, z, cr, sr, cy, sy).gap;
   }
-  // Local minima, then merge neighbours not separated by a real rise (1 um).
+  // Local minima, then merge neighbours not separated by a real rise (10 nm).
   std::vector<std::size_t> mins;
   for (std::size_t k = 0; k < n; ++k) {
     if (!std::isfinite(g[k])) continue;
@@ -242,7 +243,7 @@ WheelContact WheelRailGeometry::wheel_contacts(Side side, double y, double z, do
     const double gr = k + 1 < n ? g[k + 1] : kInf;
     if (g[k] < gl && g[k] <= gr) mins.push_back(k);
   }
-  constexpr double kProminence = 1e-6;
+  constexpr double kProminence = 1e-8;  // [m] humps lower than this are spline noise
   std::vector<std::size_t> kept;
   for (std::size_t m : mins) {
     if (!kept.empty()) {
@@ -283,8 +284,8 @@ void WheelRailGeometry::check_pose(double y, double yaw) const {
 }
 
 namespace {
-void check_points(const WheelContact& wc, Side side, double y, double wheel_lo, double wheel_hi, double rail_lo,
-                  double rail_hi) {
+void check_points(const WheelContact& wc, Side side, double y, double wheel_lo, double wheel_hi, double tip,
+                  double margin) {
   if (wc.n == 0)
     throw InputError(std::string("wheelset lateral shift y = ") + num(y) + " m: the " + side_name(side) +
                      " wheel does not meet its rail (out of range)");
@@ -295,8 +296,10 @@ void check_points(const WheelContact& wc, Side side, double y, double wheel_lo, 
       throw InputError(std::string("wheelset lateral shift y = ") + num(y) + " m is out of range: the " +
                        side_name(side) + " wheel touches within 1 mm of the end of its profile (y_wheel = " +
                        num(p.y_wheel * 1e3) + " mm); flange climbing or wheel off the rail");
-    (void)rail_lo;
-    (void)rail_hi;
+    if (i == 0 && std::abs(p.y_wheel - tip) < margin)
+      throw InputError(std::string("wheelset lateral shift y = ") + num(y) + " m is out of range: the " +
+                       side_name(side) + " wheel rides on its flange tip (contact " + num(std::abs(p.y_wheel - tip) * 1e3) +
+                       " mm from the tip): flange climbing");
   }
 }
 }  // namespace
@@ -321,7 +324,7 @@ WheelsetContact WheelRailGeometry::solve(double y, double yaw) const {
   ws.z = {z, z};
   for (Side s : {Side::left, Side::right}) {
     ws.wheel[static_cast<std::size_t>(s)] = wheel_contacts(s, y, z, roll, yaw);
-    check_points(ws.wheel[static_cast<std::size_t>(s)], s, y, wheel_.y().front(), wheel_.y().back(), 0, 0);
+    check_points(ws.wheel[static_cast<std::size_t>(s)], s, y, wheel_.y().front(), wheel_.y().back(), tip_, options_.flange_margin);
   }
   return ws;
 }
@@ -342,7 +345,7 @@ WheelsetContact WheelRailGeometry::at_roll(double y, double yaw, double roll) co
                        " wheel does not meet its rail (out of range)");
     ws.z[i] = -g;
     ws.wheel[i] = wheel_contacts(s, y, ws.z[i], roll, yaw);
-    check_points(ws.wheel[i], s, y, wheel_.y().front(), wheel_.y().back(), 0, 0);
+    check_points(ws.wheel[i], s, y, wheel_.y().front(), wheel_.y().back(), tip_, options_.flange_margin);
   }
   return ws;
 }

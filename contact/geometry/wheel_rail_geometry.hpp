@@ -56,6 +56,7 @@ struct TrackSetup {
 struct SearchOptions {
   double second_gap_max = 1.0e-4;  // [m] report extra local minima with gap below this
   double wheel_step = 5.0e-5;      // [m] wheel sampling step (arc length) before refinement
+  double flange_margin = 3.0e-3;   // [m] contact closer than this to the flange tip = climbing (out of range)
   double rail_step = 5.0e-6;       // [m] rail height grid step
 };
 
@@ -134,6 +135,7 @@ class WheelRailGeometry {
   SearchOptions options_;
   Profile wheel_, rail_;  // rail already rotated by the inclination
   double d_ = 0.0;            // wheel-profile origin |y_w| in wheelset axes
+  double tip_ = 0.0;          // wheel-profile y of the flange tip (largest z)
   double rail_offset_ = 0.0;  // rail-profile origin |y| in the track
   std::vector<WheelSample> samples_;
   double u0_ = 0.0, du_ = 0.0;

@@ -1,0 +1,82 @@
+// Profile reading, validation and spline evaluation (contact/geometry/profile.cpp).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "contact/geometry/profile.hpp"
+#include "core/errors.hpp"
+#include "results/csv_writer.hpp"
+#include "test_support.hpp"
+
+using namespace railsim;
+using namespace railsim::contact;
+
+namespace {
+// Wheel-profile z at lateral y from the spline (bisection on the chord parameter).
+double z_at(const Profile& p, double y) {
+  double lo = 0.0, hi = p.spline().length();
+  for (int i = 0; i < 100; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (p.spline().eval(mid).y < y ? lo : hi) = mid;
+  }
+  return p.spline().eval(0.5 * (lo + hi)).z;
+}
+}  // namespace
+
+TEST_CASE("S1002 file agrees with the analytic Netter definition", "[geometry][profile]") {
+  const Profile w = read_profile("S1002", ProfileKind::wheel);
+  // Oriented: flange (max z = 28 mm) at y = -55 mm, back face at -70 mm.
+  const auto imax = std::max_element(w.z().begin(), w.z().end()) - w.z().begin();
+  CHECK(w.y()[static_cast<std::size_t>(imax)] == Approx(-0.055).margin(0.5e-3));
+  CHECK(w.z()[static_cast<std::size_t>(imax)] == Approx(0.028).margin(0.01e-3));
+  const auto ref = results::read_csv(test::data_path("contact_geometry/s1002_netter.csv"));
+  double worst = 0.0;
+  for (std::size_t i = 0; i < ref.rows.size(); ++i) {
+    const double s = ref.number(i, "s_mm") * 1e-3, F = ref.number(i, "F_mm") * 1e-3;
+    if (s < w.y().front() || s > w.y().back()) continue;
+    worst = std::max(worst, std::abs(z_at(w, s) - F));
+  }
+  INFO("largest |F_file - F_Netter| = " << worst * 1e3 << " mm");
+  CHECK(worst < 0.02e-3);  // 20 um: digitised file vs analytic definition
+}
+
+TEST_CASE("Spline curvature of a sampled circle", "[geometry][profile]") {
+  // Circle of radius 0.3 m sampled every 0.5 mm: curvature 1/R, slope exact.
+  std::vector<double> y, z;
+  const double R = 0.3;
+  for (double v = -0.03; v <= 0.03 + 1e-12; v += 0.5e-3) {
+    y.push_back(v);
+    z.push_back(R - std::sqrt(R * R - v * v));
+  }
+  const Profile p(ProfileKind::rail, "circle", y, z);
+  for (double t : {0.01, 0.03, 0.045}) {
+    const CurvePoint c = p.spline().eval(t);
+    const double n2 = c.dy * c.dy + c.dz * c.dz;
+    const double k = (c.dy * c.ddz - c.dz * c.ddy) / (n2 * std::sqrt(n2));
+    CHECK(k == Approx(1.0 / R).epsilon(1e-3));
+    CHECK(c.dz / c.dy == Approx(c.y / std::sqrt(R * R - c.y * c.y)).margin(1e-5));
+  }
+}
+
+TEST_CASE("Bad profiles give InputError with file and line", "[geometry][profile][errors]") {
+  auto msg = [](const std::string& file) {
+    try {
+      read_profile(test::data_path("contact_geometry/" + file), ProfileKind::rail);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  CHECK_THAT(msg("unsorted.csv"), Catch::Contains("unsorted.csv:8") && Catch::Contains("not sorted"));
+  CHECK_THAT(msg("duplicated.csv"), Catch::Contains("duplicated.csv:6") && Catch::Contains("duplicated"));
+  CHECK_THAT(msg("self_intersecting.csv"), Catch::Contains("self_intersecting.csv:") && Catch::Contains("self-intersecting"));
+  CHECK_THAT(msg("too_short.csv"), Catch::Contains("too short"));
+  CHECK_THAT(msg("no_units.csv"), Catch::Contains("length unit unknown"));
+  CHECK_THAT(msg("missing_file.csv"), Catch::Contains("cannot open"));
+  CHECK_THROWS_AS(read_profile("S1002", ProfileKind::rail), InputError);
+  // The unit option fixes the missing unit.
+  ProfileReadOptions o;
+  o.unit = 1e-3;
+  CHECK(read_profile(test::data_path("contact_geometry/no_units.csv"), ProfileKind::rail, o).y().front() ==
+        Approx(-0.030));
+}
