@@ -1,0 +1,44 @@
+// Wheel-rail contact geometry as seen by the engine: for one wheel, the
+// contact-point quantities as a function of the wheelset's lateral shift
+// toward that wheel (s = +y for the left wheel, -y for the right wheel; the
+// tables are used symmetrically, cooperrider-car.md §7.2).
+//
+//   rolling_radius r [m], contact_angle delta [rad] (> 0 tilts the normal
+//   toward the track centre), lateral position a of the contact point from the
+//   wheelset centre [m] (positive, along the wheel's own side), height of the
+//   contact point below the nominal contact level [m], patch semi-axes a, b [m]
+//   and Kalker coefficients C11, C22, C23 at the reference load N0 [N] with
+//   normal approach q0 [m] (tables), or relative curvatures A, B [1/m] (Hertz).
+#pragma once
+
+#include <memory>
+#include <string>
+
+namespace railsim::engine {
+
+struct WheelContact {
+  double rolling_radius = 0.0;
+  double contact_angle = 0.0;
+  double lateral = 0.0;
+  double semi_a = 0.0, semi_b = 0.0;   // at N0; 0 when unknown
+  double C11 = 0.0, C22 = 0.0, C23 = 0.0;  // 0 when unknown
+  double N0 = 0.0, q0 = 0.0;           // reference load / approach; 0 when unknown
+  double A = 0.0, B = 0.0;             // relative curvatures; 0 when unknown
+  double flange_force = 0.0;           // extra lateral force toward the track centre [N] (dead-band flange), >= 0
+};
+
+class ContactGeometry {
+ public:
+  virtual ~ContactGeometry() = default;
+  // Contact quantities for a shift s toward this wheel [m]; no allocation.
+  virtual void evaluate(double s, WheelContact& out) const = 0;
+  // Nominal rolling radius at zero shift [m] (sets the nominal spin speed V/r0).
+  virtual double r0() const = 0;
+  // Half distance between nominal contact points at zero shift [m].
+  virtual double l0() const = 0;
+  // Largest admissible |shift| [m] (table range); beyond it the run stops.
+  virtual double max_shift() const = 0;
+  virtual std::string describe() const = 0;
+};
+
+}  // namespace railsim::engine

@@ -1,0 +1,76 @@
+// SUNDIALS CVODE, variable-order BDF with Newton iteration and a direct
+// (dense or banded) linear solver (Hindmarsh et al. 2005, ACM TOMS 31(3);
+// SUNDIALS 6 user guide). Jacobian: CVODE's difference quotients ("fd") or
+// ours ("assembled", OdeSystem::jacobian). See integrator.hpp.
+#include <cvode/cvode.h>
+#include <cvode/cvode_ls.h>
+
+#include <memory>
+
+#include "core/errors.hpp"
+#include "engine/integrator.hpp"
+#include "engine/sundials_support.hpp"
+
+namespace railsim::engine {
+namespace {
+
+class CvodeIntegrator final : public Integrator {
+ public:
+  CvodeIntegrator(OdeSystem& sys, const IntegratorOptions& o) : c_(sys, o) {}
+  ~CvodeIntegrator() override {
+    if (mem_) CVodeFree(&mem_);
+  }
+  void init(double t0, const Eigen::VectorXd& x0) override {
+    c_.load(x0);
+    t_ = t0;
+    mem_ = CVodeCreate(CV_BDF, c_.ctx);
+    CVodeInit(mem_, &SundialsCommon::rhs_cb, t0, c_.y);
+    CVodeSetUserData(mem_, &c_);
+    CVodeSetErrHandlerFn(mem_, &SundialsCommon::err_cb, &c_);
+    CVodeSStolerances(mem_, c_.opt.rtol, c_.opt.atol);
+    if (c_.opt.max_step > 0) CVodeSetMaxStep(mem_, c_.opt.max_step);
+    if (c_.opt.initial_step > 0) CVodeSetInitStep(mem_, c_.opt.initial_step);
+    CVodeSetMinStep(mem_, c_.opt.min_step);
+    CVodeSetMaxNumSteps(mem_, c_.opt.max_steps);
+    c_.make_linear_solver(x0, t0);
+    CVodeSetLinearSolver(mem_, c_.LS, c_.A);
+    if (c_.opt.jacobian == "assembled") CVodeSetJacFn(mem_, &SundialsCommon::jac_cb);
+  }
+  void advance(double t_out, Eigen::VectorXd& x) override {
+    const int flag = CVode(mem_, t_out, c_.y, &t_, CV_NORMAL);
+    if (flag < 0) throw NumericalError(c_.failure(t_, name(), flag, CVodeGetReturnFlagName(flag), false));
+    c_.store(x);
+  }
+  IntegratorStats stats() const override {
+    IntegratorStats s;
+    long nfe = 0, nfels = 0, netf = 0, ncf = 0, nje = 0;
+    CVodeGetNumSteps(mem_, &s.steps);
+    CVodeGetNumRhsEvals(mem_, &nfe);
+    CVodeGetNumLinRhsEvals(mem_, &nfels);
+    CVodeGetNumErrTestFails(mem_, &netf);
+    CVodeGetNumNonlinSolvConvFails(mem_, &ncf);
+    CVodeGetNumJacEvals(mem_, &nje);
+    CVodeGetLastStep(mem_, &s.last_step);
+    s.rhs_calls = nfe + nfels;
+    s.failed_steps = netf + ncf;
+    s.jacobian_evals = nje;
+    return s;
+  }
+  std::string name() const override {
+    return "cvode_bdf (" + c_.opt.linear_solver + ", " + c_.opt.jacobian + " Jacobian)";
+  }
+  bool is_explicit() const override { return false; }
+
+ private:
+  SundialsCommon c_;
+  void* mem_ = nullptr;
+  double t_ = 0.0;
+};
+
+}  // namespace
+
+std::unique_ptr<Integrator> make_cvode_integrator(OdeSystem& sys, const IntegratorOptions& o) {
+  return std::make_unique<CvodeIntegrator>(sys, o);
+}
+
+}  // namespace railsim::engine

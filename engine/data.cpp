@@ -1,0 +1,21 @@
+// engine::Data; see data.hpp.
+#include "engine/data.hpp"
+
+namespace railsim::engine {
+
+Data::Data(const Model& model)
+    : motion(model.bodies.size()),
+      force(model.bodies.size()),
+      track(model.bodies.size()),
+      wheel(2 * model.wheelsets.size()) {
+  for (std::size_t i = 0; i < wheel.size(); ++i) workspace.push_back(model.coupling.make_workspace());
+  failure.reserve(512);
+  first_invalid_reason.reserve(128);
+}
+
+void Data::fail(std::string msg) {
+  failed = true;
+  failure = std::move(msg);
+}
+
+}  // namespace railsim::engine

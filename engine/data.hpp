@@ -1,0 +1,49 @@
+// engine::Data: the per-run workspace of a Model (model.hpp). Sized once from
+// the model; the right-hand side (system.hpp) writes only into it and does
+// not allocate. Also carries the per-wheel outputs of the last evaluation and
+// the failure message when the physics broke down.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "contact/tangential_model.hpp"
+#include "contact/types.hpp"
+#include "engine/model.hpp"
+
+namespace railsim::engine {
+
+struct WheelOutput {
+  double Q = 0.0;    // vertical wheel load [N]
+  double N = 0.0;    // normal load [N]
+  double Y = 0.0;    // lateral force of the rail on the wheel, track y [N]
+  double Fx = 0.0;   // longitudinal creep force [N]
+  double Fy = 0.0;   // lateral creep force in the contact plane [N]
+  double Mz = 0.0;   // spin moment [N m]
+  contact::Creepages creep;
+  double contact_y = 0.0;       // lateral position of the contact point on the rail, track y [m]
+  double contact_angle = 0.0;   // [rad]
+  double rolling_radius = 0.0;  // [m]
+  bool valid = true;
+  const char* reason = "";
+};
+
+struct Data {
+  explicit Data(const Model& model);
+
+  std::vector<BodyMotion> motion;
+  std::vector<GenForce> force;
+  std::vector<TrackSample> track;      // per body, at its own distance
+  std::vector<WheelOutput> wheel;      // 2 per wheelset: left, right
+  std::vector<std::unique_ptr<contact::TangentialWorkspace>> workspace;  // per wheel
+  double t = 0.0, V = 0.0, s = 0.0;
+  long rhs_calls = 0;
+  long invalid_contact_calls = 0;      // evaluations with a contact outside its validity domain
+  std::string first_invalid_reason;
+  bool failed = false;
+  std::string failure;                 // set when rhs returns false
+  void fail(std::string msg);
+};
+
+}  // namespace railsim::engine

@@ -1,0 +1,93 @@
+// Time integrators behind one interface, chosen by name (registry):
+//   cvode_bdf      SUNDIALS CVODE, variable-order BDF (stiff), Newton with a
+//                  dense or banded direct solver, Jacobian by SUNDIALS'
+//                  difference quotients ("fd") or assembled by us ("assembled":
+//                  exact kinematic rows dq/dt = v, finite-difference force rows)
+//   arkode_erk     SUNDIALS ARKODE ERKStep, Dormand-Prince 5(4) (explicit)
+//   arkode_dirk    SUNDIALS ARKODE ARKStep, default 4th-order SDIRK (implicit)
+//   odeint_dopri5  Boost.Odeint Dormand-Prince 5(4), dense output, error control
+// All take relative/absolute tolerances and a maximum step; output times are
+// reached exactly (interpolation by the integrator). Statistics: steps,
+// right-hand-side calls, failed steps (error-test and convergence failures).
+// Failures throw NumericalError naming the time, the integrator and the reason
+// (the model's own failure message when the right-hand side stopped it: NaN,
+// lift-off, derailment; step-size collapse; too much work, which for an
+// explicit method on a stiff system is the usual symptom: the message says so).
+#pragma once
+
+#include <Eigen/Core>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace railsim::engine {
+
+struct IntegratorOptions {
+  std::string method = "cvode_bdf";
+  double rtol = 1e-6;
+  double atol = 1e-8;
+  double max_step = 0.0;       // 0: unlimited
+  double initial_step = 0.0;   // 0: integrator's choice
+  double min_step = 1e-12;     // smaller steps = collapse -> NumericalError
+  long max_steps = 100000;     // per output interval
+  std::string jacobian = "fd";        // cvode/arkode_dirk: fd | assembled
+  std::string linear_solver = "dense";  // cvode/arkode_dirk: dense | band
+};
+
+struct IntegratorStats {
+  long steps = 0;
+  long rhs_calls = 0;
+  long failed_steps = 0;
+  long jacobian_evals = 0;
+  double last_step = 0.0;
+};
+
+// The ODE x' = f(t, x) seen by an integrator.
+class OdeSystem {
+ public:
+  virtual ~OdeSystem() = default;
+  virtual int size() const = 0;
+  // false: the model broke down (failure_message says why).
+  virtual bool rhs(double t, const double* x, double* xdot) = 0;
+  virtual std::string failure_message() const = 0;
+  // Dense Jacobian (column-major n x n) at (t, x) with f(t, x) = fx given.
+  // Default: forward differences of rhs.
+  virtual bool jacobian(double t, const double* x, const double* fx, double* J);
+};
+
+class Integrator {
+ public:
+  virtual ~Integrator() = default;
+  virtual void init(double t0, const Eigen::VectorXd& x0) = 0;
+  // Advance to t_out and return the state there (throws NumericalError).
+  virtual void advance(double t_out, Eigen::VectorXd& x) = 0;
+  virtual IntegratorStats stats() const = 0;
+  virtual std::string name() const = 0;
+  virtual bool is_explicit() const = 0;
+};
+
+using IntegratorFactory = std::unique_ptr<Integrator> (*)(OdeSystem&, const IntegratorOptions&);
+struct IntegratorEntry {
+  const char* name;
+  const char* description;
+  IntegratorFactory make;
+};
+const std::vector<IntegratorEntry>& integrators();
+std::string integrator_names();
+// Throws InputError for unknown names or bad options.
+std::unique_ptr<Integrator> make_integrator(OdeSystem& sys, const IntegratorOptions& options);
+
+// Factories (one file each).
+std::unique_ptr<Integrator> make_cvode_integrator(OdeSystem&, const IntegratorOptions&);
+std::unique_ptr<Integrator> make_arkode_erk_integrator(OdeSystem&, const IntegratorOptions&);
+std::unique_ptr<Integrator> make_arkode_dirk_integrator(OdeSystem&, const IntegratorOptions&);
+std::unique_ptr<Integrator> make_odeint_integrator(OdeSystem&, const IntegratorOptions&);
+
+// Hint appended when an explicit method stops on a model failure.
+extern const char* const kExplicitHint;
+
+// Shared helper: the failure text "t = .. s: <integrator>: <what>".
+std::string integrator_failure(double t, const std::string& integrator, const std::string& what);
+
+}  // namespace railsim::engine

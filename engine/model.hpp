@@ -1,0 +1,69 @@
+// engine::Model: the immutable description of one vehicle on one track with
+// its contact choices (Pinocchio/MuJoCo style: Model is built once from YAML
+// and never changes while integrating; per-run scratch lives in engine::Data,
+// data.hpp; algorithms are functions over (Model, Data), system.hpp).
+//
+// State vector: per body, the positions of its active DOFs, then their
+// velocities, then (full wheelset model) the spin perturbation beta [rad/s];
+// after all bodies, one elongation state per yaw damper. All states are
+// deviations from the static equilibrium on straight, level track (gravity is
+// balanced by spring preloads computed in finalize_model(), system.hpp).
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "engine/anti_roll_bar.hpp"
+#include "engine/bump_stop.hpp"
+#include "engine/contact_geometry.hpp"
+#include "engine/rigid_body.hpp"
+#include "engine/spring_damper.hpp"
+#include "engine/track_frame.hpp"
+#include "engine/wheel_rail_coupling.hpp"
+#include "engine/yaw_damper.hpp"
+
+namespace railsim::engine {
+
+enum class WheelsetModel { lateral, full };
+const char* wheelset_model_name(WheelsetModel m);
+
+struct Wheelset {
+  std::string name;
+  int body = -1;
+  std::shared_ptr<const ContactGeometry> geometry;
+  double static_load[2] = {0.0, 0.0};  // normal load per wheel at rest [N] (left, right)
+  double hertz_q0[2] = {0.0, 0.0};     // full model: static normal approach per wheel [m]
+  int beta_state = -1;                 // full model: spin perturbation state
+};
+
+// Speed V(t) = V0 + a t (a = 0: constant speed), distance s(t) = s0 + V0 t + a t^2 / 2.
+struct SpeedProfile {
+  double v0 = 0.0;
+  double accel = 0.0;
+  double s0 = 0.0;
+  double speed(double t) const { return v0 + accel * t; }
+  double distance(double t) const { return s0 + v0 * t + 0.5 * accel * t * t; }
+};
+
+struct Model {
+  std::string vehicle_name;
+  std::vector<RigidBody> bodies;
+  std::vector<SpringDamper> springs;
+  std::vector<BumpStop> bump_stops;
+  std::vector<YawDamper> yaw_dampers;
+  std::vector<AntiRollBar> anti_roll_bars;
+  std::vector<Wheelset> wheelsets;
+  WheelsetModel wheelset_model = WheelsetModel::lateral;
+  WheelRailCoupling coupling;
+  std::shared_ptr<const TrackReference> track;
+  SpeedProfile speed;
+  double max_lateral_shift = 0.0;  // run stops beyond (0: geometry range)
+  int n_states = 0;
+  std::vector<std::string> state_names;
+  bool finalized = false;
+
+  int body_index(const std::string& name) const;  // -1 if none
+};
+
+}  // namespace railsim::engine

@@ -1,0 +1,179 @@
+// Scenario YAML reader; see scenario.hpp.
+#include "engine/scenario.hpp"
+
+#include <filesystem>
+
+#include "contact/reduction.hpp"
+#include "core/errors.hpp"
+#include "engine/conical_geometry.hpp"
+#include "engine/geometry_table.hpp"
+#include "engine/system.hpp"
+#include "engine/track_input.hpp"
+#include "engine/vehicle_file.hpp"
+#include "tracks/track_file.hpp"
+
+namespace railsim::engine {
+namespace {
+
+using config::InputNode;
+namespace fs = std::filesystem;
+
+std::string resolve(const std::string& base, const std::string& p) {
+  if (p.empty() || fs::path(p).is_absolute()) return p;
+  return (fs::path(base) / p).lexically_normal().string();
+}
+
+std::shared_ptr<const ContactGeometry> load_geometry(const InputNode& g, const std::string& base) {
+  const std::string type = g.string("type");
+  if (type == "conical") {
+    g.allow_only({"type", "r0", "conicity", "l0", "contact_angle", "flange_clearance", "flange_stiffness",
+                  "max_shift"});
+    ConicalParams p;
+    p.r0 = g.in_range("r0", 0.1, 1.5);
+    p.conicity = g.in_range("conicity", 0.0, 1.0);
+    p.l0 = g.in_range("l0", 0.3, 1.5);
+    p.contact_angle = g.has("contact_angle") ? g.in_range("contact_angle", -1.5, 1.5) : 0.0;
+    p.flange_clearance = g.number_or("flange_clearance", 0.0);
+    p.flange_stiffness = g.number_or("flange_stiffness", 0.0);
+    if (p.flange_clearance < 0) g.at("flange_clearance").fail("expected a non-negative number");
+    if (p.flange_stiffness < 0) g.at("flange_stiffness").fail("expected a non-negative number");
+    p.max_shift = g.has("max_shift") ? g.in_range("max_shift", 0.0, 0.2, true) : 0.05;
+    return std::make_shared<ConicalGeometry>(p);
+  }
+  if (type == "table") {
+    g.allow_only({"type", "file"});
+    return std::make_shared<GeometryTable>(resolve(base, g.string("file")));
+  }
+  g.at("type").fail("expected 'conical' or 'table' (got '" + type + "')");
+}
+
+}  // namespace
+
+Scenario load_scenario(const std::string& path) {
+  const auto root = InputNode::load_file(path);
+  Scenario s = load_scenario(root, fs::path(path).parent_path().string());
+  s.file = path;
+  if (s.name.empty()) s.name = fs::path(path).stem().string();
+  return s;
+}
+
+Scenario load_scenario(const InputNode& root, const std::string& base) {
+  root.allow_only({"name", "description", "vehicle", "track", "speed", "speed_kmh", "acceleration",
+                   "start_distance", "duration", "output_interval", "wheelset_model", "max_lateral_shift",
+                   "contact", "integrator", "initial"});
+  Scenario sc;
+  sc.name = root.string_or("name", "");
+  Model& m = sc.model;
+  load_vehicle(resolve(base, root.string("vehicle")), m);
+
+  // Track.
+  const InputNode tn = root.at("track");
+  std::shared_ptr<const tracks::Track> track;
+  if (tn.is_scalar()) {
+    track = std::make_shared<const tracks::Track>(tracks::load_track(resolve(base, tn.as_string())));
+  } else {
+    track = std::make_shared<const tracks::Track>(tracks::load_track(tn, base, "track"));
+  }
+  m.track = std::make_shared<TrackInput>(track);
+
+  // Speed.
+  if (root.has("speed") == root.has("speed_kmh")) root.fail("give exactly one of 'speed' [m/s] or 'speed_kmh'");
+  m.speed.v0 = root.has("speed") ? root.in_range("speed", 0.0, 200.0, true) : root.in_range("speed_kmh", 0.0, 720.0, true) / 3.6;
+  m.speed.accel = root.number_or("acceleration", 0.0);
+  m.speed.s0 = root.number_or("start_distance", 0.0);
+  sc.duration = root.positive("duration");
+  if (m.speed.accel < 0 && m.speed.speed(sc.duration) <= 0)
+    root.at("acceleration").fail("the speed would reach zero before the end of the run");
+  sc.output_interval = root.has("output_interval") ? root.in_range("output_interval", 0.0, sc.duration, true) : 0.01;
+  const std::string wm = root.string_or("wheelset_model", "lateral");
+  if (wm == "lateral") m.wheelset_model = WheelsetModel::lateral;
+  else if (wm == "full") m.wheelset_model = WheelsetModel::full;
+  else root.at("wheelset_model").fail("expected 'lateral' or 'full' (got '" + wm + "')");
+  if (root.has("max_lateral_shift")) m.max_lateral_shift = root.in_range("max_lateral_shift", 0.0, 0.2, true);
+
+  // Contact.
+  const InputNode c = root.at("contact");
+  c.allow_only({"geometry", "tangential", "saturation", "material", "reduction", "creep_coefficients", "patch",
+                "spin", "static_approach"});
+  auto geo = load_geometry(c.at("geometry"), base);
+  sc.geometry_description = geo->describe();
+  for (auto& w : m.wheelsets) w.geometry = geo;
+  CouplingOptions co;
+  co.tangential = c.string_or("tangential", "coefficients");
+  co.saturation = c.string_or("saturation", "none");
+  if (co.saturation != "none" && co.saturation != "she")
+    c.at("saturation").fail("expected 'none' or 'she' (got '" + co.saturation + "')");
+  if (auto mat = c.find("material")) {
+    mat->allow_only({"E", "nu", "mu", "shear_modulus"});
+    co.material.E = mat->has("E") ? mat->positive("E") : co.material.E;
+    co.material.nu = mat->has("nu") ? mat->in_range("nu", 0.0, 0.5, false, false) : co.material.nu;
+    co.material.mu = mat->has("mu") ? mat->in_range("mu", 0.0, 2.0, true) : co.material.mu;
+    co.shear_modulus = mat->has("shear_modulus") ? mat->positive("shear_modulus") : 0.0;
+  }
+  if (auto r = c.find("reduction")) co.reduction = contact::parse_reduction(r->as_string(), r->where() + ": key 'reduction'");
+  if (auto f = c.find("creep_coefficients")) {
+    f->allow_only({"f11", "f22", "f23", "f33", "N_ref"});
+    co.f11 = f->positive("f11");
+    co.f22 = f->positive("f22");
+    co.f23 = f->number_or("f23", 0.0);
+    co.f33 = f->number_or("f33", 0.0);
+    co.N_ref = f->number_or("N_ref", 0.0);
+    if (co.f23 < 0 || co.f33 < 0 || co.N_ref < 0) f->fail("f23, f33 and N_ref must be non-negative");
+  }
+  if (auto p = c.find("patch")) {
+    p->allow_only({"a", "b", "N_ref"});
+    co.patch_a = p->positive("a");
+    co.patch_b = p->positive("b");
+    co.N_ref = p->positive("N_ref");
+  }
+  if (auto sp = c.find("spin")) co.spin = sp->as_bool();
+  const bool table = c.at("geometry").string("type") == "table";
+  if (co.tangential == "coefficients" && !table && co.f11 <= 0)
+    c.fail("tangential 'coefficients' with conical wheels needs 'creep_coefficients' (f11, f22, ...)");
+  if (co.tangential != "coefficients" && !table && co.patch_a <= 0)
+    c.fail("tangential model '" + co.tangential + "' with conical wheels needs 'patch' (a, b, N_ref)");
+  m.coupling = WheelRailCoupling(co);
+  const double q0 = c.has("static_approach") ? c.in_range("static_approach", 0.0, 1e-2, true) : 7e-5;
+
+  // Integrator.
+  if (auto in = root.find("integrator")) {
+    in->allow_only({"method", "rtol", "atol", "max_step", "initial_step", "min_step", "max_steps", "jacobian",
+                    "linear_solver"});
+    auto& o = sc.integrator;
+    o.method = in->string_or("method", o.method);
+    if (in->has("rtol")) o.rtol = in->in_range("rtol", 0.0, 0.1, true);
+    if (in->has("atol")) o.atol = in->in_range("atol", 0.0, 0.1, true);
+    if (in->has("max_step")) o.max_step = in->non_negative("max_step");
+    if (in->has("initial_step")) o.initial_step = in->non_negative("initial_step");
+    if (in->has("min_step")) o.min_step = in->non_negative("min_step");
+    if (in->has("max_steps")) o.max_steps = static_cast<long>(in->in_range("max_steps", 1, 1e9));
+    o.jacobian = in->string_or("jacobian", o.jacobian);
+    o.linear_solver = in->string_or("linear_solver", o.linear_solver);
+    bool known = false;
+    for (const auto& e : integrators()) known |= o.method == e.name;
+    if (!known) in->at("method").fail("unknown integrator '" + o.method + "' (known: " + integrator_names() + ")");
+    if (o.jacobian != "fd" && o.jacobian != "assembled") in->at("jacobian").fail("expected 'fd' or 'assembled'");
+    if (o.linear_solver != "dense" && o.linear_solver != "band")
+      in->at("linear_solver").fail("expected 'dense' or 'band'");
+  }
+
+  finalize_model(m);
+  for (auto& w : m.wheelsets) w.hertz_q0[0] = w.hertz_q0[1] = q0;
+  sc.x0 = Eigen::VectorXd::Zero(m.n_states);
+  if (auto init = root.find("initial")) {
+    for (const auto& key : init->keys()) {
+      int idx = -1;
+      for (int i = 0; i < m.n_states; ++i)
+        if (m.state_names[i] == key) idx = i;
+      if (idx < 0) {
+        std::string known;
+        for (const auto& n : m.state_names) known += (known.empty() ? "" : ", ") + n;
+        init->at(key).fail("unknown state '" + key + "' (states: " + known + ")");
+      }
+      sc.x0[idx] = init->number(key);
+    }
+  }
+  return sc;
+}
+
+}  // namespace railsim::engine

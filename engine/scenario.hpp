@@ -1,0 +1,54 @@
+// A scenario: vehicle + track + speed + contact choices + integrator +
+// duration, read from YAML (scenarios/*.yaml) through config::InputNode.
+//
+//   name: single_wheelset_defect
+//   vehicle: ../vehicles/single_wheelset.yaml     # relative to this file
+//   track: ../tracks/x.yaml | {inline track, tracks/track_file.hpp format}
+//   speed: 30            # [m/s]  (or speed_kmh: 108)
+//   acceleration: 0      # [m/s^2], speed profile V = V0 + a t
+//   start_distance: 0    # [m], track distance of the vehicle reference at t = 0
+//   duration: 5          # [s]
+//   output_interval: 0.005
+//   wheelset_model: lateral | full
+//   max_lateral_shift: 0.05   # [m], optional (default: geometry range)
+//   contact:
+//     geometry: {type: conical, r0: 0.46, conicity: 0.2, l0: 0.75, contact_angle: 0,
+//                flange_clearance: 0.009, flange_stiffness: 1.5e7, max_shift: 0.05}
+//             | {type: table, file: ../../shared/reference/dytsi/RSGEO_S1002_UIC60_1in40.dat}
+//     tangential: coefficients | <contact registry name>
+//     saturation: none | she            # coefficients only
+//     material: {E: 2.1e11, nu: 0.28, mu: 0.3, shear_modulus: 8.2e10}
+//     reduction: none                   # contact/reduction.hpp syntax
+//     creep_coefficients: {f11: 1e7, f22: 1e7, f23: 0, f33: 0, N_ref: 0}
+//     patch: {a: 6e-3, b: 4e-3, N_ref: 60000}
+//     spin: true
+//     static_approach: 7e-5             # full model, conical wheels: Hertz approach at the static load [m]
+//   integrator: {method: cvode_bdf, rtol: 1e-6, atol: 1e-8, max_step: 0.001, jacobian: fd,
+//                linear_solver: dense, max_steps: 100000, min_step: 1e-12}
+//   initial: {ws1.lateral: 0.001}       # state name: value (deviations)
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+
+#include "config/yaml_input.hpp"
+#include "engine/integrator.hpp"
+#include "engine/model.hpp"
+
+namespace railsim::engine {
+
+struct Scenario {
+  std::string name;
+  std::string file;
+  Model model;  // finalized
+  IntegratorOptions integrator;
+  double duration = 1.0;
+  double output_interval = 0.01;
+  Eigen::VectorXd x0;
+  std::string geometry_description;
+};
+
+Scenario load_scenario(const std::string& path);
+Scenario load_scenario(const config::InputNode& root, const std::string& base_dir);
+
+}  // namespace railsim::engine

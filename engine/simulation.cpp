@@ -1,0 +1,76 @@
+// Time simulation and channels; see simulation.hpp.
+#include "engine/simulation.hpp"
+
+#include <chrono>
+#include <cmath>
+
+#include "engine/system.hpp"
+
+namespace railsim::engine {
+
+RunSummary simulate(const Model& model, const IntegratorOptions& options, const Eigen::VectorXd& x0,
+                    double duration, double dt_out, const Observer& observer) {
+  Data data(model), rec(model);
+  ModelOde ode(model, data);
+  auto integ = make_integrator(ode, options);
+  RunSummary sum;
+  sum.integrator = integ->name();
+  sum.max_abs_lateral.assign(model.wheelsets.size(), 0.0);
+  Eigen::VectorXd x = x0, xdot(model.n_states);
+  const auto start = std::chrono::steady_clock::now();
+  auto report = [&](double t) {
+    rhs_or_throw(model, rec, t, x.data(), xdot.data());
+    for (std::size_t w = 0; w < model.wheelsets.size(); ++w) {
+      const int qi = model.bodies[model.wheelsets[w].body].q_index[kLat];
+      sum.max_abs_lateral[w] = std::max(sum.max_abs_lateral[w], std::abs(x[qi]));
+    }
+    ++sum.outputs;
+    if (observer) observer(t, x, rec);
+  };
+  integ->init(0.0, x);
+  report(0.0);
+  const long n_out = std::max(1L, std::lround(duration / dt_out));
+  for (long k = 1; k <= n_out; ++k) {
+    const double t = k == n_out ? duration : k * dt_out;
+    integ->advance(t, x);
+    report(t);
+  }
+  sum.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  sum.simulated_time = duration;
+  sum.real_time_factor = sum.wall_time > 0 ? duration / sum.wall_time : 0.0;
+  sum.stats = integ->stats();
+  sum.invalid_contact_calls = data.invalid_contact_calls;
+  sum.first_invalid_reason = data.first_invalid_reason;
+  return sum;
+}
+
+std::vector<std::string> channel_names(const Model& model) {
+  std::vector<std::string> c = {"time", "distance", "speed"};
+  for (const auto& w : model.wheelsets) {
+    c.push_back(w.name + ".y");
+    c.push_back(w.name + ".yaw");
+    for (const char* side : {"L", "R"}) {
+      const std::string p = w.name + "." + side + ".";
+      for (const char* q : {"Q", "Y", "Fx", "xi", "eta", "spin", "contact_y"}) c.push_back(p + q);
+    }
+  }
+  return c;
+}
+
+void channel_row(const Model& model, double t, const Eigen::VectorXd& x, const Data& d, std::vector<double>& row) {
+  row.clear();
+  row.push_back(t);
+  row.push_back(model.speed.distance(t));
+  row.push_back(model.speed.speed(t));
+  for (std::size_t w = 0; w < model.wheelsets.size(); ++w) {
+    const auto& b = model.bodies[model.wheelsets[w].body];
+    row.push_back(x[b.q_index[kLat]]);
+    row.push_back(x[b.q_index[kYaw]]);
+    for (int i = 0; i < 2; ++i) {
+      const WheelOutput& o = d.wheel[2 * w + i];
+      row.insert(row.end(), {o.Q, o.Y, o.Fx, o.creep.xi, o.creep.eta, o.creep.phi, o.contact_y});
+    }
+  }
+}
+
+}  // namespace railsim::engine

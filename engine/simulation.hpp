@@ -1,0 +1,40 @@
+// Time simulation of a Model: integrate from x0 over a duration, reporting
+// the state at every output time to an observer (which receives a Data
+// evaluated at that state: wheel loads, forces, creepages). Measures wall
+// time and the real-time factor (simulated time / wall time). Failures throw
+// NumericalError (integrator.hpp).
+#pragma once
+
+#include <Eigen/Core>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "engine/data.hpp"
+#include "engine/integrator.hpp"
+#include "engine/model.hpp"
+
+namespace railsim::engine {
+
+struct RunSummary {
+  std::string integrator;
+  IntegratorStats stats;
+  double simulated_time = 0.0;
+  double wall_time = 0.0;         // [s]
+  double real_time_factor = 0.0;  // simulated / wall
+  std::vector<double> max_abs_lateral;  // per wheelset [m]
+  long invalid_contact_calls = 0;
+  std::string first_invalid_reason;
+  long outputs = 0;
+};
+
+using Observer = std::function<void(double t, const Eigen::VectorXd& x, const Data& d)>;
+
+RunSummary simulate(const Model& model, const IntegratorOptions& options, const Eigen::VectorXd& x0,
+                    double duration, double output_interval, const Observer& observer = {});
+
+// Channel names of the standard output (channels.csv) and one row of values.
+std::vector<std::string> channel_names(const Model& model);
+void channel_row(const Model& model, double t, const Eigen::VectorXd& x, const Data& d, std::vector<double>& row);
+
+}  // namespace railsim::engine

@@ -1,0 +1,113 @@
+// SUNDIALS plumbing; see sundials_support.hpp.
+#include "engine/sundials_support.hpp"
+
+#include <sunlinsol/sunlinsol_band.h>
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunmatrix/sunmatrix_band.h>
+#include <sunmatrix/sunmatrix_dense.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/errors.hpp"
+
+namespace railsim::engine {
+
+const char* const kExplicitHint =
+    ". Note: an explicit integrator on a stiff system (elastic contact, creep damping at low speed) can go "
+    "unstable and produce such a state; rerun with cvode_bdf or arkode_dirk";
+
+SundialsCommon::SundialsCommon(OdeSystem& s, const IntegratorOptions& o) : sys(s), opt(o) {
+  if (SUNContext_Create(nullptr, &ctx) != 0) throw NumericalError("SUNDIALS: cannot create a context");
+  y = N_VNew_Serial(sys.size(), ctx);
+}
+
+SundialsCommon::~SundialsCommon() {
+  if (LS) SUNLinSolFree(LS);
+  if (A) SUNMatDestroy(A);
+  if (y) N_VDestroy(y);
+  if (ctx) SUNContext_Free(&ctx);
+}
+
+void SundialsCommon::load(const Eigen::VectorXd& x) {
+  double* d = N_VGetArrayPointer(y);
+  for (int i = 0; i < sys.size(); ++i) d[i] = x[i];
+}
+
+void SundialsCommon::store(Eigen::VectorXd& x) const {
+  const double* d = N_VGetArrayPointer(y);
+  x.resize(sys.size());
+  for (int i = 0; i < sys.size(); ++i) x[i] = d[i];
+}
+
+void SundialsCommon::make_linear_solver(const Eigen::VectorXd& x0, double t0) {
+  const int n = sys.size();
+  J.assign(std::size_t(n) * n, 0.0);
+  if (opt.linear_solver == "band") {
+    // Bandwidth from the Jacobian pattern at a slightly perturbed x0.
+    Eigen::VectorXd xp = x0;
+    for (int i = 0; i < n; ++i) xp[i] += 1e-6 * (1 + (i % 7)) / 7.0;
+    std::vector<double> f(n);
+    if (!sys.rhs(t0, xp.data(), f.data()) || !sys.jacobian(t0, xp.data(), f.data(), J.data()))
+      throw NumericalError(integrator_failure(t0, "band set-up", sys.failure_message()));
+    mu = ml = 0;
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+        if (J[i + std::size_t(j) * n] != 0.0) {
+          mu = std::max(mu, j - i);
+          ml = std::max(ml, i - j);
+        }
+    A = SUNBandMatrix(n, mu, ml, ctx);
+    LS = SUNLinSol_Band(y, A, ctx);
+  } else {
+    A = SUNDenseMatrix(n, n, ctx);
+    LS = SUNLinSol_Dense(y, A, ctx);
+  }
+}
+
+int SundialsCommon::rhs_cb(double t, N_Vector yv, N_Vector ydot, void* user) {
+  auto* self = static_cast<SundialsCommon*>(user);
+  if (self->sys.rhs(t, N_VGetArrayPointer(yv), N_VGetArrayPointer(ydot))) return 0;
+  self->model_failed = true;
+  return -1;  // unrecoverable: the model itself broke down
+}
+
+int SundialsCommon::jac_cb(double t, N_Vector yv, N_Vector fy, SUNMatrix Jm, void* user, N_Vector, N_Vector,
+                           N_Vector) {
+  auto* self = static_cast<SundialsCommon*>(user);
+  ++self->jac_evals;
+  const int n = self->sys.size();
+  if (!self->sys.jacobian(t, N_VGetArrayPointer(yv), N_VGetArrayPointer(fy), self->J.data())) {
+    self->model_failed = true;
+    return -1;
+  }
+  if (SUNMatGetID(Jm) == SUNMATRIX_BAND) {
+    for (int j = 0; j < n; ++j)
+      for (int i = std::max(0, j - self->mu); i <= std::min(n - 1, j + self->ml); ++i)
+        SM_ELEMENT_B(Jm, i, j) = self->J[i + std::size_t(j) * n];
+  } else {
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) SM_ELEMENT_D(Jm, i, j) = self->J[i + std::size_t(j) * n];
+  }
+  return 0;
+}
+
+void SundialsCommon::err_cb(int, const char* module, const char* function, char* msg, void* user) {
+  auto* self = static_cast<SundialsCommon*>(user);
+  self->last_error = std::string(module) + "/" + function + ": " + msg;
+}
+
+std::string SundialsCommon::failure(double t, const std::string& name, int flag, const char* flag_name,
+                                    bool is_explicit) const {
+  if (model_failed)
+    return integrator_failure(t, name, "model stopped: " + sys.failure_message() + (is_explicit ? kExplicitHint : ""));
+  std::string what = std::string(flag_name) + " (flag " + std::to_string(flag) + ")";
+  if (!last_error.empty()) what += ": " + last_error;
+  if (is_explicit && (flag == -1))
+    what += ". More than " + std::to_string(opt.max_steps) +
+            " steps in one output interval: the system is stiff for an explicit method (e.g. elastic contact or "
+            "creep damping at low speed); use cvode_bdf or arkode_dirk";
+  return integrator_failure(t, name, what);
+}
+
+}  // namespace railsim::engine

@@ -1,0 +1,51 @@
+// Shared plumbing of the SUNDIALS integrators (CVODE, ARKODE): context,
+// serial vector, dense/banded matrix and direct linear solver, the
+// right-hand-side and Jacobian callbacks, bandwidth detection, error capture.
+// Not a model: see cvode_integrator.cpp and arkode_integrator.cpp.
+#pragma once
+
+#include <nvector/nvector_serial.h>
+#include <sundials/sundials_context.h>
+#include <sundials/sundials_linearsolver.h>
+#include <sundials/sundials_matrix.h>
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "engine/integrator.hpp"
+
+namespace railsim::engine {
+
+struct SundialsCommon {
+  SundialsCommon(OdeSystem& sys, const IntegratorOptions& opt);
+  ~SundialsCommon();
+  SundialsCommon(const SundialsCommon&) = delete;
+  SundialsCommon& operator=(const SundialsCommon&) = delete;
+
+  // Create matrix + linear solver (implicit methods), detecting the bandwidth
+  // from the Jacobian pattern at x0 when a banded solver is asked for.
+  void make_linear_solver(const Eigen::VectorXd& x0, double t0);
+  void load(const Eigen::VectorXd& x);
+  void store(Eigen::VectorXd& x) const;
+
+  OdeSystem& sys;
+  IntegratorOptions opt;
+  SUNContext ctx = nullptr;
+  N_Vector y = nullptr;
+  SUNMatrix A = nullptr;
+  SUNLinearSolver LS = nullptr;
+  int mu = 0, ml = 0;
+  long jac_evals = 0;
+  std::string last_error;       // message captured from SUNDIALS
+  std::vector<double> J;        // dense scratch for assembled Jacobians
+  bool model_failed = false;
+
+  static int rhs_cb(double t, N_Vector y, N_Vector ydot, void* user);
+  static int jac_cb(double t, N_Vector y, N_Vector fy, SUNMatrix J, void* user, N_Vector, N_Vector, N_Vector);
+  static void err_cb(int code, const char* module, const char* function, char* msg, void* user);
+  // Failure text for a negative return flag.
+  std::string failure(double t, const std::string& name, int flag, const char* flag_name, bool is_explicit) const;
+};
+
+}  // namespace railsim::engine

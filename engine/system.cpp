@@ -1,0 +1,235 @@
+// System assembly and right-hand side; see system.hpp.
+#include "engine/system.hpp"
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <cstdio>
+
+#include "core/errors.hpp"
+#include "engine/wheelset_full.hpp"
+#include "engine/wheelset_lateral.hpp"
+
+namespace railsim::engine {
+namespace {
+
+void element_forces(const Model& model, Data& d, const double* x, double* xdot) {
+  for (const auto& e : model.springs) apply_spring_damper(e, d.motion, d.force);
+  for (const auto& e : model.bump_stops) apply_bump_stop(e, d.motion, d.force);
+  for (const auto& e : model.anti_roll_bars) apply_anti_roll_bar(e, d.motion, d.force);
+  for (const auto& e : model.yaw_dampers) {
+    const double rate = apply_yaw_damper(e, x ? x[e.state] : 0.0, d.motion, d.force);
+    if (xdot) xdot[e.state] = rate;
+  }
+}
+
+void assign_states(Model& model) {
+  int n = 0;
+  model.state_names.clear();
+  for (auto& b : model.bodies) {
+    for (int k = 0; k < kNumDof; ++k)
+      if (b.active[k]) {
+        b.q_index[k] = n++;
+        model.state_names.push_back(b.name + "." + dof_name(k));
+      }
+    for (int k = 0; k < kNumDof; ++k)
+      if (b.active[k]) {
+        b.v_index[k] = n++;
+        model.state_names.push_back(b.name + "." + dof_name(k) + "_rate");
+      }
+    if (b.wheelset >= 0 && model.wheelset_model == WheelsetModel::full) {
+      model.wheelsets[b.wheelset].beta_state = n++;
+      model.state_names.push_back(b.name + ".spin_perturbation");
+    }
+  }
+  for (auto& e : model.yaw_dampers) {
+    e.state = n++;
+    model.state_names.push_back(e.name + ".damper_elongation");
+  }
+  model.n_states = n;
+}
+
+}  // namespace
+
+void finalize_model(Model& model) {
+  if (!model.track) throw InputError("model '" + model.vehicle_name + "': no track");
+  for (auto& w : model.wheelsets)
+    if (!w.geometry) throw InputError("wheelset '" + w.name + "': no contact geometry");
+  if (model.wheelset_model == WheelsetModel::full)
+    for (auto& w : model.wheelsets) {
+      auto& b = model.bodies[w.body];
+      b.active = {true, true, true, false, true};
+    }
+  assign_states(model);
+
+  // --- static equilibrium of the suspension (linear statics) -----------------
+  // Free DOFs: the active DOFs of every body that is not a wheelset.
+  std::vector<std::pair<int, int>> free;
+  for (std::size_t b = 0; b < model.bodies.size(); ++b)
+    if (model.bodies[b].wheelset < 0)
+      for (int k = 0; k < kNumDof; ++k)
+        if (model.bodies[b].active[k]) free.emplace_back(int(b), k);
+  for (auto& e : model.springs) e.preload.setZero();
+  Data d(model);
+  const int nf = static_cast<int>(free.size());
+  Eigen::VectorXd qstar = Eigen::VectorXd::Zero(nf);
+  if (nf > 0) {
+    Eigen::MatrixXd K(nf, nf);
+    Eigen::VectorXd Fg(nf);
+    auto forces_at = [&](const Eigen::VectorXd& q, Eigen::VectorXd& out) {
+      for (auto& m : d.motion) m = BodyMotion{};
+      for (auto& f : d.force) f.fill(0.0);
+      for (int j = 0; j < nf; ++j) d.motion[free[j].first].q[free[j].second] = q[j];
+      for (const auto& e : model.springs) apply_spring_damper(e, d.motion, d.force);
+      for (const auto& e : model.anti_roll_bars) apply_anti_roll_bar(e, d.motion, d.force);
+      for (int j = 0; j < nf; ++j) out[j] = d.force[free[j].first][free[j].second];
+    };
+    Eigen::VectorXd q = Eigen::VectorXd::Zero(nf), col(nf);
+    for (int j = 0; j < nf; ++j) {
+      q.setZero();
+      q[j] = 1.0;
+      forces_at(q, col);
+      K.col(j) = -col;
+    }
+    Fg.setZero();
+    for (int j = 0; j < nf; ++j)
+      if (free[j].second == kVert) Fg[j] = -model.bodies[free[j].first].mass * kGravity;
+    Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(K);
+    qstar = cod.solve(Fg);
+    const double res = (K * qstar - Fg).norm();
+    if (!(res <= 1e-6 * (Fg.norm() + 1.0))) {
+      std::string names;
+      for (int j = 0; j < nf; ++j)
+        if (free[j].second == kVert) names += (names.empty() ? "" : ", ") + model.bodies[free[j].first].name;
+      throw InputError("vehicle '" + model.vehicle_name +
+                       "': the suspension cannot carry the weight (no static equilibrium; check the vertical "
+                       "springs of: " + names + ")");
+    }
+  }
+  // Preloads: the element forces at the equilibrium configuration.
+  for (auto& m : d.motion) m = BodyMotion{};
+  for (int j = 0; j < nf; ++j) d.motion[free[j].first].q[free[j].second] = qstar[j];
+  for (auto& e : model.springs) {
+    Eigen::Vector3d dd, vv;
+    relative_motion(d.motion, e.body_a, e.r_a, e.body_b, e.r_b, dd, vv);
+    e.preload = -e.k.cwiseProduct(dd);
+  }
+  // Anti-roll bars carry no static moment on a symmetric vehicle; a residual
+  // roll moment from an asymmetric layout is left to the springs.
+
+  // Static wheel loads: forces on each wheelset at x = 0.
+  for (auto& m : d.motion) m = BodyMotion{};
+  for (auto& f : d.force) f.fill(0.0);
+  for (const auto& e : model.springs) apply_spring_damper(e, d.motion, d.force);
+  for (auto& w : model.wheelsets) {
+    const auto& b = model.bodies[w.body];
+    GenForce F = d.force[w.body];
+    F[kVert] -= b.mass * kGravity;
+    WheelContact c[2];
+    w.geometry->evaluate(0.0, c[0]);
+    w.geometry->evaluate(0.0, c[1]);
+    const double S = -F[kVert], D = -F[kRoll] + w.geometry->r0() * F[kLat];
+    const double aL = c[0].lateral, aR = c[1].lateral;
+    const double Q[2] = {(S * aR + D) / (aL + aR), (S * aL - D) / (aL + aR)};
+    for (int i = 0; i < 2; ++i) {
+      if (!(Q[i] > 0))
+        throw InputError("vehicle '" + model.vehicle_name + "': wheelset '" + w.name +
+                         "' has no positive static wheel load");
+      w.static_load[i] = Q[i] / std::cos(c[i].contact_angle);
+    }
+  }
+  model.finalized = true;
+}
+
+bool rhs(const Model& model, Data& d, double t, const double* x, double* xdot) {
+  ++d.rhs_calls;
+  d.t = t;
+  d.V = model.speed.speed(t);
+  d.s = model.speed.distance(t);
+  const std::size_t nb = model.bodies.size();
+  for (std::size_t b = 0; b < nb; ++b) {
+    const RigidBody& body = model.bodies[b];
+    BodyMotion& m = d.motion[b];
+    for (int k = 0; k < kNumDof; ++k) {
+      m.q[k] = body.q_index[k] >= 0 ? x[body.q_index[k]] : 0.0;
+      m.v[k] = body.v_index[k] >= 0 ? x[body.v_index[k]] : 0.0;
+    }
+    GenForce& f = d.force[b];
+    f.fill(0.0);
+    model.track->sample(d.s + body.position.x(), d.track[b]);
+    const FrameLoads L = frame_loads(d.track[b], d.V, body.mass, body.inertia.z());
+    f[kLat] += L.Fy;
+    f[kVert] += L.Fz;
+    f[kYaw] += L.Mz;
+  }
+  element_forces(model, d, x, xdot);
+  for (std::size_t w = 0; w < model.wheelsets.size(); ++w) {
+    const bool ok = model.wheelset_model == WheelsetModel::full ? wheelset_full_forces(model, d, int(w), x, xdot)
+                                                                 : wheelset_lateral_forces(model, d, int(w));
+    if (!ok) return false;
+  }
+  for (std::size_t b = 0; b < nb; ++b) {
+    const RigidBody& body = model.bodies[b];
+    for (int k = 0; k < kNumDof; ++k) {
+      if (body.q_index[k] < 0) continue;
+      xdot[body.q_index[k]] = x[body.v_index[k]];
+      xdot[body.v_index[k]] = d.force[b][k] / body.generalised_mass(k);
+    }
+  }
+  for (int i = 0; i < model.n_states; ++i)
+    if (!std::isfinite(xdot[i])) {
+      char buf[256];
+      std::snprintf(buf, sizeof buf, "non-finite derivative of state '%s' (state value %g)",
+                    model.state_names[i].c_str(), x[i]);
+      d.fail(buf);
+      return false;
+    }
+  return true;
+}
+
+void rhs_or_throw(const Model& model, Data& d, double t, const double* x, double* xdot) {
+  if (!rhs(model, d, t, x, xdot)) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "t = %.6g s, s = %.6g m: ", t, model.speed.distance(t));
+    throw NumericalError(std::string(buf) + d.failure + " (vehicle '" + model.vehicle_name + "')");
+  }
+}
+
+}  // namespace railsim::engine
+
+namespace railsim::engine {
+
+ModelOde::ModelOde(const Model& model, Data& data)
+    : model_(model), data_(data), xp_(model.n_states), fp_(model.n_states),
+      kinematic_row_(model.n_states, 0), kinematic_col_(model.n_states, -1) {
+  for (const auto& b : model.bodies)
+    for (int k = 0; k < kNumDof; ++k)
+      if (b.q_index[k] >= 0) {
+        kinematic_row_[b.q_index[k]] = 1;
+        kinematic_col_[b.q_index[k]] = b.v_index[k];
+      }
+}
+
+bool ModelOde::rhs(double t, const double* x, double* xdot) { return engine::rhs(model_, data_, t, x, xdot); }
+
+std::string ModelOde::failure_message() const {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "t = %.6g s, s = %.6g m: ", data_.t, data_.s);
+  return std::string(buf) + data_.failure + " (vehicle '" + model_.vehicle_name + "', " +
+         wheelset_model_name(model_.wheelset_model) + " wheelset model)";
+}
+
+bool ModelOde::jacobian(double t, const double* x, const double* fx, double* J) {
+  const int n = model_.n_states;
+  std::copy(x, x + n, xp_.begin());
+  for (int j = 0; j < n; ++j) {
+    const double h = 1e-7 * std::max(1.0, std::abs(x[j])) + 1e-9;
+    xp_[j] = x[j] + h;
+    if (!engine::rhs(model_, data_, t, xp_.data(), fp_.data())) return false;
+    for (int i = 0; i < n; ++i)
+      J[i + std::size_t(j) * n] = kinematic_row_[i] ? (kinematic_col_[i] == j ? 1.0 : 0.0) : (fp_[i] - fx[i]) / h;
+    xp_[j] = x[j];
+  }
+  return true;
+}
+
+}  // namespace railsim::engine

@@ -1,0 +1,28 @@
+// tracks::Track as an engine TrackReference; see track_input.hpp.
+#include "engine/track_input.hpp"
+
+namespace railsim::engine {
+
+void TrackInput::sample(double s, TrackSample& out) const {
+  const tracks::TrackState t = track_->at(s);
+  out.curvature = t.curvature;
+  out.curvature_rate = t.dcurvature;
+  out.cant = t.cant_angle;
+  const auto& ir = t.irregularity;
+  out.lat_left = ir.left_lateral();
+  out.lat_right = ir.right_lateral();
+  out.dlat_left = ir.left_lateral_slope();
+  out.dlat_right = ir.right_lateral_slope();
+  out.vert_left = ir.left_vertical();
+  out.vert_right = ir.right_vertical();
+  out.dvert_left = ir.left_vertical_slope();
+  out.dvert_right = ir.right_vertical_slope();
+}
+
+std::string TrackInput::describe() const {
+  std::string s = "track '" + track_->name() + "', " + std::to_string(track_->length()) + " m";
+  for (const auto& c : track_->irregularities().components()) s += "; " + c->describe();
+  return s;
+}
+
+}  // namespace railsim::engine

@@ -1,0 +1,34 @@
+// Wheelset model "lateral": lateral shift y and yaw psi are states; the
+// vertical wheel loads follow from quasi-static equilibrium of the wheelset
+// (no vertical or roll inertia), the normal loads from the contact angle.
+//
+// With Fz, Mx, Fy the vertical force, roll moment (about the wheelset centre)
+// and lateral force of everything except the contacts (suspension, gravity,
+// inertial frame loads), and a_L, a_R the lateral contact positions:
+//   Q_L + Q_R = -Fz                                  (vertical equilibrium)
+//   a_L Q_L - a_R Q_R = -Mx + r0 Fy                   (roll equilibrium, with the
+//                                                    contact lateral forces taken
+//                                                    as -Fy: lateral inertia neglected)
+//   N = Q / cos(delta)
+// Contact forces per wheel (side = +1 left, -1 right), contact-frame creep
+// forces (Fx, Fy, Mz) from wheel_rail_coupling, resolved in track axes:
+//   Y  = Fy cos(delta) - side N sin(delta) + Fx psi - side F_flange
+//   X  = Fx - Fy psi cos(delta)
+//   yaw moment  -side a (X + Y psi) + Mz cos(delta)
+// (DYTSI's resolution, cooperrider-car.md §7.6, without roll). The lateral
+// components -side N sin(delta) give the gravitational stiffness when the
+// contact angle varies with y. The spin speed is V/r0 (no spin perturbation).
+// Relative lateral motion: y - y_track, y_track = mean of the rails' lateral
+// irregularities. Stops (Data::fail) on wheel lift-off (Q < 0) and when |y|
+// leaves the geometry's range.
+#pragma once
+
+#include "engine/data.hpp"
+#include "engine/model.hpp"
+
+namespace railsim::engine {
+
+// Adds the contact forces of wheelset w to data.force; false on failure.
+bool wheelset_lateral_forces(const Model& model, Data& data, int w);
+
+}  // namespace railsim::engine
