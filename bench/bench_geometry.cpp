@@ -1,0 +1,89 @@
+// Wheel-rail geometry speed: contact-table build (S1002 / UIC60 1:40, +-12 mm,
+// 0.1 mm step), per-lookup cost (goal < 100 ns per wheel, i.e. < 200 ns per
+// wheelset lookup), single-position contact search, STRIPES semi-Hertz solve.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <random>
+
+#include "contact/geometry/contact_table.hpp"
+#include "contact/geometry/semi_hertz.hpp"
+
+using namespace railsim::contact;
+
+namespace {
+struct Setup {
+  Profile w = read_profile("S1002", ProfileKind::wheel);
+  Profile r = read_profile("UIC60", ProfileKind::rail);
+  TrackSetup ts = [] {
+    TrackSetup t;
+    t.inclination = std::atan(1.0 / 40.0);
+    return t;
+  }();
+  WheelRailGeometry g{w, r, ts};
+};
+const Setup& setup() {
+  static const Setup s;
+  return s;
+}
+}  // namespace
+
+static void BM_GeometryBuild(benchmark::State& state) {
+  for (auto _ : state) {
+    WheelRailGeometry g(setup().w, setup().r, setup().ts);
+    benchmark::DoNotOptimize(g.rail_offset());
+  }
+}
+BENCHMARK(BM_GeometryBuild)->Unit(benchmark::kMillisecond);
+
+static void BM_TableBuild(benchmark::State& state) {
+  const TableGrid grid;  // -12 .. 12 mm, 0.1 mm: 241 rows
+  for (auto _ : state) {
+    const ContactTable t = ContactTable::build(setup().g, grid);
+    benchmark::DoNotOptimize(t.rows());
+  }
+  state.counters["rows"] = 241;
+}
+BENCHMARK(BM_TableBuild)->Unit(benchmark::kMillisecond);
+
+static void BM_TableLookup(benchmark::State& state) {
+  static const ContactTable t = ContactTable::build(setup().g, TableGrid{});
+  std::mt19937 rng(1);
+  std::uniform_real_distribution<double> u(-0.0119, 0.0119);
+  std::vector<double> ys(4096);
+  for (auto& y : ys) y = u(rng);
+  TableSample s;
+  std::size_t i = 0;
+  for (auto _ : state) {
+    t.lookup(ys[i++ & 4095], s);
+    benchmark::DoNotOptimize(s.wheel[0].p[0].radius);
+    benchmark::DoNotOptimize(s.wheel[1].p[0].radius);
+  }
+  state.SetLabel("both wheels per lookup");
+}
+BENCHMARK(BM_TableLookup);
+
+static void BM_SolveSinglePosition(benchmark::State& state) {
+  double y = -0.01;
+  for (auto _ : state) {
+    const auto c = setup().g.solve(y, 0.0);
+    benchmark::DoNotOptimize(c.roll);
+    y += 1e-4;
+    if (y > 0.01) y = -0.01;
+  }
+}
+BENCHMARK(BM_SolveSinglePosition)->Unit(benchmark::kMicrosecond);
+
+static void BM_SemiHertzS1002(benchmark::State& state) {
+  const auto c = setup().g.solve(0.0);
+  const auto gp = setup().g.gap_profile(Side::left, c.wheel[0].p[0], 0.0, c.z[0], c.roll, 0.0, 0.014, 561);
+  SemiHertzWorkspace ws;
+  const Material m;
+  for (auto _ : state) {
+    const auto r = semi_hertz_from_load(gp, 1e4, m, ws);
+    benchmark::DoNotOptimize(r.area);
+  }
+}
+BENCHMARK(BM_SemiHertzS1002)->Unit(benchmark::kMillisecond);
+
+BENCHMARK_MAIN();
