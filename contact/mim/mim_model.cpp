@@ -1,0 +1,241 @@
+// The exact contact solver facade and the tangential model "mim"; see mim_model.hpp.
+#include "contact/mim/mim_model.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "contact/hertz.hpp"
+#include "core/errors.hpp"
+
+namespace railsim::contact::mim {
+
+namespace {
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", v);
+  return buf;
+}
+
+void check_material(const Material& m) {
+  if (!(m.E > 0.0) || !std::isfinite(m.E))
+    throw InputError("mim: Young's modulus E must be positive (got " + num(m.E) + ")");
+  if (!(m.nu > 0.0 && m.nu <= 0.5))
+    throw InputError("mim: Poisson's ratio nu must lie in (0, 0.5] (got " + num(m.nu) + ")");
+  if (!(m.mu >= 0.0) || !std::isfinite(m.mu))
+    throw InputError("mim: friction coefficient mu must be >= 0 and finite (got " + num(m.mu) + ")");
+}
+
+void check_patch(const HertzPatch& p) {
+  for (auto [v, name] : {std::pair{p.A, "A"}, {p.B, "B"}, {p.a, "a"}, {p.b, "b"}, {p.Fz, "Fz"}})
+    if (!(v > 0.0) || !std::isfinite(v))
+      throw InputError(std::string("mim: Hertz patch ") + name + " must be positive and finite (got " + num(v) + ")");
+}
+}  // namespace
+
+void MimOptions::check() const {
+  if (grid < 4 || grid > 4000)
+    throw InputError("mim: grid (elements across the minor axis) must lie in [4, 4000] (got " +
+                     std::to_string(grid) + ")");
+  if (!(tolerance > 0.0 && tolerance <= 0.1))
+    throw InputError("mim: tolerance must lie in (0, 0.1] (got " + num(tolerance) + ")");
+  if (!(normal_tolerance > 0.0 && normal_tolerance <= 0.1))
+    throw InputError("mim: normal tolerance must lie in (0, 0.1] (got " + num(normal_tolerance) + ")");
+  if (max_iterations < 1) throw InputError("mim: max_iterations must be >= 1");
+  layer.check();
+}
+
+MimSolver::MimSolver(const MimOptions& options) : opt_(options) { opt_.check(); }
+
+void MimSolver::prepare(const ContactGrid& grid, const Material& material) {
+  grid.check("mim");
+  check_material(material);
+  const ElasticPair pair{material.shear_modulus(), material.nu, 0.0};
+  const double layer = opt_.layer.compliance();
+  if (!op_ || !op_->matches(grid, pair, layer)) {
+    const bool resize = !op_ || op_->grid().size() != grid.size();
+    op_ = std::make_unique<InfluenceOperator>(grid, pair, layer, opt_.fftw_flags);
+    if (resize) {
+      const int n = grid.size();
+      nsolver_ = std::make_unique<NormalSolver>(n);
+      tsolver_ = std::make_unique<TangentialSolver>(n);
+      gap_.assign(n, 0.0);
+      wx_.assign(n, 0.0);
+      wy_.assign(n, 0.0);
+      bound_.assign(n, 0.0);
+      sol_.pn.assign(n, 0.0);
+      sol_.px.assign(n, 0.0);
+      sol_.py.assign(n, 0.0);
+      sol_.state.assign(n, ElementState::Exterior);
+    }
+  }
+  sol_.grid = op_->grid();
+  sol_.tangential = TangentialResult{};
+}
+
+void MimSolver::normal(const std::vector<double>& gap, double Fz) {
+  if (!(Fz > 0.0) || !std::isfinite(Fz)) throw InputError("mim: normal load Fz must be positive (got " + num(Fz) + ")");
+  if (static_cast<int>(gap.size()) != sol_.grid.size())
+    throw InputError("mim: gap has " + std::to_string(gap.size()) + " values, grid has " +
+                     std::to_string(sol_.grid.size()) + " elements");
+  for (double v : gap)
+    if (!std::isfinite(v)) throw InputError("mim: gap values must be finite");
+  NormalOptions no;
+  no.tolerance = opt_.normal_tolerance;
+  sol_.normal = nsolver_->solve_load(*op_, gap.data(), Fz, sol_.pn.data(), no);
+  sol_.Fz = sol_.normal.load;
+  sol_.approach = sol_.normal.approach;
+  sol_.n_contact = sol_.normal.n_contact;
+  if (!sol_.normal.converged && opt_.throw_on_failure)
+    throw NumericalError("mim: normal solver did not converge in " + std::to_string(sol_.normal.iterations) +
+                         " iterations (Fz = " + num(Fz) + " N, residual " + num(sol_.normal.residual) + ")");
+}
+
+void MimSolver::tangential(TangentialProblem kind, double w1, double w2, double w3, double mu) {
+  const ContactGrid& g = sol_.grid;
+  for (int j = 0; j < g.my; ++j)
+    for (int i = 0; i < g.mx; ++i) {
+      const int q = g.index(i, j);
+      if (kind == TangentialProblem::SteadyRolling) {
+        wx_[q] = w1 - w3 * g.y(j);  // xi - phi y
+        wy_[q] = w2 + w3 * g.x(i);  // eta + phi x
+      } else {
+        wx_[q] = w1;
+        wy_[q] = w2;
+      }
+      bound_[q] = opt_.layer.bound(mu, sol_.pn[q]);
+    }
+  TangentialOptions to;
+  to.tolerance = opt_.tolerance;
+  to.max_iterations = opt_.max_iterations;
+  sol_.tangential = tsolver_->solve(*op_, kind, wx_.data(), wy_.data(), bound_.data(), sol_.px.data(),
+                                    sol_.py.data(), sol_.state.data(), to);
+  double Fx = 0.0, Fy = 0.0, Mz = 0.0;
+  for (int j = 0; j < g.my; ++j)
+    for (int i = 0; i < g.mx; ++i) {
+      const int q = g.index(i, j);
+      Fx += sol_.px[q];
+      Fy += sol_.py[q];
+      Mz += g.x(i) * sol_.py[q] - g.y(j) * sol_.px[q];
+    }
+  const double dA = g.element_area();
+  sol_.Fx = Fx * dA;
+  sol_.Fy = Fy * dA;
+  sol_.Mz = Mz * dA;
+  sol_.n_adhesion = sol_.tangential.n_adhesion;
+  sol_.n_slip = sol_.tangential.n_slip;
+  if (!sol_.tangential.converged && opt_.throw_on_failure)
+    throw NumericalError("mim: tangential solver (" +
+                         std::string(kind == TangentialProblem::SteadyRolling ? "steady rolling" : "shift") +
+                         ") did not converge in " + std::to_string(sol_.tangential.iterations) +
+                         " iterations (residual " + num(sol_.tangential.residual) + ", tolerance " +
+                         num(opt_.tolerance) + "; w = " + num(w1) + ", " + num(w2) + ", " + num(w3) + ")");
+}
+
+const MimSolution& MimSolver::solve_normal(const ContactGrid& grid, const std::vector<double>& gap, double Fz,
+                                           const Material& material) {
+  prepare(grid, material);
+  normal(gap, Fz);
+  std::fill(sol_.px.begin(), sol_.px.end(), 0.0);
+  std::fill(sol_.py.begin(), sol_.py.end(), 0.0);
+  sol_.Fx = sol_.Fy = sol_.Mz = 0.0;
+  return sol_;
+}
+
+const MimSolution& MimSolver::solve_gap(const ContactGrid& grid, const std::vector<double>& gap, double Fz,
+                                        const Creepages& creep, const Material& material) {
+  for (double v : {creep.xi, creep.eta, creep.phi})
+    if (!std::isfinite(v)) throw InputError("mim: creepages must be finite");
+  prepare(grid, material);
+  normal(gap, Fz);
+  tangential(TangentialProblem::SteadyRolling, creep.xi, creep.eta, creep.phi, material.mu);
+  return sol_;
+}
+
+const MimSolution& MimSolver::solve_hertz(const HertzPatch& patch, const Creepages& creep,
+                                          const Material& material) {
+  check_patch(patch);
+  const ContactGrid g = grid_for_patch(patch.a, patch.b, opt_.grid);
+  prepare(g, material);
+  const ContactGrid& gg = sol_.grid;
+  for (int j = 0; j < gg.my; ++j)
+    for (int i = 0; i < gg.mx; ++i) gap_[gg.index(i, j)] = patch.A * gg.x(i) * gg.x(i) + patch.B * gg.y(j) * gg.y(j);
+  for (double v : {creep.xi, creep.eta, creep.phi})
+    if (!std::isfinite(v)) throw InputError("mim: creepages must be finite");
+  normal(gap_, patch.Fz);
+  tangential(TangentialProblem::SteadyRolling, creep.xi, creep.eta, creep.phi, material.mu);
+  return sol_;
+}
+
+const MimSolution& MimSolver::solve_shift_hertz(const HertzPatch& patch, double Wx, double Wy,
+                                                const Material& material) {
+  check_patch(patch);
+  if (!std::isfinite(Wx) || !std::isfinite(Wy)) throw InputError("mim: shift must be finite");
+  const ContactGrid g = grid_for_patch(patch.a, patch.b, opt_.grid);
+  prepare(g, material);
+  const ContactGrid& gg = sol_.grid;
+  for (int j = 0; j < gg.my; ++j)
+    for (int i = 0; i < gg.mx; ++i) gap_[gg.index(i, j)] = patch.A * gg.x(i) * gg.x(i) + patch.B * gg.y(j) * gg.y(j);
+  normal(gap_, patch.Fz);
+  tangential(TangentialProblem::Shift, Wx, Wy, 0.0, material.mu);
+  return sol_;
+}
+
+namespace {
+
+class MimWorkspace final : public TangentialWorkspace {
+ public:
+  explicit MimWorkspace(const MimOptions& o) : solver(o) {}
+  MimSolver solver;
+};
+
+// Tangential model "mim": the exact steady-rolling solution for the Hertzian
+// patch of the input. Reduction factors scale the creepages (k11 xi, k22 eta,
+// k23 phi), the normalised-table interpretation of physics-reference sec. 11.
+class MimModel final : public TangentialModel {
+ public:
+  explicit MimModel(const MimOptions& o) : opt_(o) { opt_.check(); }
+  std::string_view name() const override { return "mim"; }
+  std::unique_ptr<TangentialWorkspace> make_workspace() const override {
+    return std::make_unique<MimWorkspace>(opt_);
+  }
+  ContactForces solve(const ContactInput& in, TangentialWorkspace* ws) const override {
+    std::unique_ptr<MimWorkspace> local;
+    auto* w = dynamic_cast<MimWorkspace*>(ws);
+    if (!w) {
+      local = std::make_unique<MimWorkspace>(opt_);
+      w = local.get();
+    }
+    HertzPatch patch = in.patch;
+    if (!(patch.a > 0.0) || !(patch.b > 0.0)) patch = hertz_from_load(patch.A, patch.B, patch.Fz, in.material);
+    const Creepages c{in.reduction.k11 * in.creep.xi, in.reduction.k22 * in.creep.eta,
+                      in.reduction.k23 * in.creep.phi};
+    const MimSolution& s = w->solver.solve_hertz(patch, c, in.material);
+    ContactForces f;
+    f.Fx = s.Fx;
+    f.Fy = s.Fy;
+    f.Mz = s.Mz;
+    f.iterations = s.normal.iterations + s.tangential.iterations;
+    f.stick_fraction = s.n_contact > 0 ? static_cast<double>(s.n_adhesion) / s.n_contact : -1.0;
+    if (!s.converged()) {
+      f.valid = false;
+      f.reason = "mim: solver did not converge";
+    }
+    return f;
+  }
+
+ private:
+  MimOptions opt_;
+};
+
+}  // namespace
+}  // namespace railsim::contact::mim
+
+namespace railsim::contact {
+std::unique_ptr<TangentialModel> make_mim(const TangentialModelOptions& options) {
+  mim::MimOptions o;
+  if (options.grid != 0) o.grid = options.grid;
+  if (options.tolerance != 0.0) o.tolerance = options.tolerance;
+  return std::make_unique<mim::MimModel>(o);
+}
+}  // namespace railsim::contact

@@ -1,0 +1,102 @@
+// The exact contact solver as a library call and as the tangential model
+// "mim": Kalker's matrix inversion method (boundary elements, Kalker 1990,
+// ch. 5) for two quasi-identical elastic half-spaces, FFT-accelerated:
+//   1. normal problem with given load on the potential-contact grid
+//      (NormalSolver, Polonsky-Keer CG);
+//   2. tangential problem (TangentialSolver): steady rolling with creepages
+//      xi, eta, phi (rigid slip w = (xi - phi y, eta + phi x), evaluated at
+//      the element centres, spin about the grid origin) or a shift
+//      (Cattaneo-Mindlin), Coulomb friction, optional third-body layer.
+// Outputs: pressure and traction fields, stick/slip map, total forces and
+// spin moment. Sign conventions as contact/types.hpp: forces of the rail on
+// the wheel, a positive creepage gives a negative force; Mz = sum (x py - y px) dA.
+// Units SI (m, Pa, N, N m; phi in 1/m).
+//
+// Input either a Hertzian patch (gap A x^2 + B y^2, the grid from the
+// semi-axes a, b with `grid` elements across the minor axis, see grid.hpp) or
+// any undeformed gap on a grid (e.g. a non-Hertzian wheel-rail patch).
+//
+// Failures: bad input throws InputError; a solver that does not converge
+// throws NumericalError naming the model, iterations and residual (or, with
+// throw_on_failure = false, returns the result flagged converged = false).
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "contact/mim/grid.hpp"
+#include "contact/mim/influence_operator.hpp"
+#include "contact/mim/normal_solver.hpp"
+#include "contact/mim/tangential_solver.hpp"
+#include "contact/mim/third_body.hpp"
+#include "contact/registry.hpp"
+#include "contact/types.hpp"
+
+namespace railsim::contact::mim {
+
+struct MimOptions {
+  int grid = 40;                  // elements across the minor axis (Hertzian input)
+  double tolerance = 1e-7;        // tangential solver, relative residual
+  double normal_tolerance = 1e-9; // normal solver, relative pressure change
+  int max_iterations = 500;       // tangential solver
+  ThirdBodyLayer layer;           // interfacial layer (off by default)
+  unsigned fftw_flags = 64u;      // FFTW_ESTIMATE (plans made instantly)
+  bool throw_on_failure = true;
+
+  // Throws InputError for grid outside [4, 4000], tolerances outside (0, 0.1].
+  void check() const;
+};
+
+struct MimSolution {
+  ContactGrid grid;
+  std::vector<double> pn, px, py;     // pressure and tractions per element [Pa]
+  std::vector<ElementState> state;    // exterior / adhesion / slip
+  double Fz = 0.0, Fx = 0.0, Fy = 0.0, Mz = 0.0;  // [N], [N m]
+  double approach = 0.0;              // [m]
+  int n_contact = 0, n_adhesion = 0, n_slip = 0;
+  NormalResult normal;
+  TangentialResult tangential;
+  bool converged() const { return normal.converged && tangential.converged; }
+};
+
+class MimSolver {
+ public:
+  explicit MimSolver(const MimOptions& options = {});
+  const MimOptions& options() const { return opt_; }
+
+  // Steady rolling on a Hertzian patch: patch.A, B, a, b, Fz must be positive.
+  const MimSolution& solve_hertz(const HertzPatch& patch, const Creepages& creep,
+                                 const Material& material);
+  // Steady rolling with any undeformed gap h [m] on `grid` and load Fz [N].
+  const MimSolution& solve_gap(const ContactGrid& grid, const std::vector<double>& gap, double Fz,
+                               const Creepages& creep, const Material& material);
+  // Shift (Cattaneo-Mindlin): tangential rigid shift (Wx, Wy) [m] of body 1
+  // relative to body 2 from the unloaded tangential state, Hertzian patch.
+  const MimSolution& solve_shift_hertz(const HertzPatch& patch, double Wx, double Wy,
+                                       const Material& material);
+  // Normal problem only (Hertzian gap or any gap).
+  const MimSolution& solve_normal(const ContactGrid& grid, const std::vector<double>& gap, double Fz,
+                                  const Material& material);
+
+  const MimSolution& solution() const { return sol_; }
+
+ private:
+  void prepare(const ContactGrid& grid, const Material& material);
+  void normal(const std::vector<double>& gap, double Fz);
+  void tangential(TangentialProblem kind, double w1, double w2, double w3, double mu);
+  void finish(const char* what);
+
+  MimOptions opt_;
+  std::unique_ptr<InfluenceOperator> op_;
+  std::unique_ptr<NormalSolver> nsolver_;
+  std::unique_ptr<TangentialSolver> tsolver_;
+  std::vector<double> gap_, wx_, wy_, bound_;
+  MimSolution sol_;
+};
+
+}  // namespace railsim::contact::mim
+
+namespace railsim::contact {
+// Factory of the registered tangential model "mim" (options grid, tolerance).
+std::unique_ptr<TangentialModel> make_mim(const TangentialModelOptions& options);
+}  // namespace railsim::contact
