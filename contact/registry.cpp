@@ -14,6 +14,8 @@ std::unique_ptr<TangentialModel> make_vermeulen_johnson(const TangentialModelOpt
 std::unique_ptr<TangentialModel> make_she(const TangentialModelOptions&);
 std::unique_ptr<TangentialModel> make_chopaya(const TangentialModelOptions&);
 std::unique_ptr<TangentialModel> make_polach(const TangentialModelOptions&);
+std::unique_ptr<TangentialModel> make_fastsim(const TangentialModelOptions&);
+std::unique_ptr<TangentialModel> make_fastrip(const TangentialModelOptions&);
 std::unique_ptr<TangentialModel> make_mim(const TangentialModelOptions&);
 
 const std::vector<TangentialModelEntry>& tangential_models() {
@@ -25,6 +27,8 @@ const std::vector<TangentialModelEntry>& tangential_models() {
       {"she", "Shen-Hedrick-Elkins cubic saturation incl. linear spin term", &make_she},
       {"chopaya", "exponential saturation with spin via reduced creepage (reconstruction of CHOPAYA)", &make_chopaya},
       {"polach", "Polach (1999/2005) with spin; kA = kS = 1, constant friction by default", &make_polach},
+      {"fastsim", "Kalker's FASTSIM (simplified theory), elliptic traction bound, grid N x N (default 20)", &make_fastsim},
+      {"fastrip", "FaStrip-type: strip theory per strip + FASTSIM-like spin, grid N x N (default 20)", &make_fastrip},
       {"mim", "exact boundary-element steady rolling (Kalker's MIM, FFT), grid N across minor axis (default 40)", &make_mim},
   };
   return table;

@@ -1,0 +1,46 @@
+// Per-call cost of FASTSIM and the FaStrip-type model (contact/fastsim.cpp,
+// contact/fastrip.cpp) on a typical wheel-rail patch (a = 6 mm, b = 4 mm,
+// Fz = 75 kN, mu = 0.3), in partial slip with creepage and spin.
+// Target (issue 5): FASTSIM on 10 x 10 elements under 5 microseconds per call.
+#include <benchmark/benchmark.h>
+
+#include "contact/fastrip.hpp"
+#include "contact/fastsim.hpp"
+
+using namespace railsim::contact;
+
+namespace {
+ContactInput typical_input() {
+  ContactInput in;
+  in.patch.a = 6e-3;
+  in.patch.b = 4e-3;
+  in.patch.Fz = 75000.0;
+  in.material = Material{210.0e9, 0.28, 0.3};
+  in.creep = {1.0e-3, -0.8e-3, 0.6};  // partial slip, with spin [1/m]
+  return in;
+}
+
+template <class Model, class Options>
+void run(benchmark::State& state) {
+  Options o;
+  o.nx = o.ny = static_cast<int>(state.range(0));
+  const Model model(o);
+  ContactInput in = typical_input();
+  double sink = 0.0;
+  for (auto _ : state) {
+    in.creep.xi += 1e-12;  // defeat caching of a constant input
+    const ContactForces f = model.solve(in, nullptr);
+    sink += f.Fx;
+    benchmark::DoNotOptimize(sink);
+  }
+  state.counters["elements"] = static_cast<double>(o.nx * o.ny);
+}
+
+void BM_Fastsim(benchmark::State& s) { run<Fastsim, FastsimOptions>(s); }
+void BM_Fastrip(benchmark::State& s) { run<Fastrip, FastripOptions>(s); }
+}  // namespace
+
+BENCHMARK(BM_Fastsim)->Arg(5)->Arg(10)->Arg(20)->Arg(40)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Fastrip)->Arg(5)->Arg(10)->Arg(20)->Arg(40)->Unit(benchmark::kMicrosecond);
+
+BENCHMARK_MAIN();

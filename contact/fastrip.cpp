@@ -1,0 +1,181 @@
+// FaStrip-type model (strip theory + FASTSIM-like spin); see fastrip.hpp for
+// the derivation, its sources and its limits.
+#include "contact/fastrip.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "contact/kalker_coefficients.hpp"
+#include "core/errors.hpp"
+
+namespace railsim::contact {
+
+namespace {
+constexpr double kPi = std::numbers::pi;
+
+// Integral of sqrt(r^2 - u^2) from 0 to u (|u| <= r) and of u sqrt(r^2 - u^2)
+// from -r to u.
+inline double seg_area(double u, double r) {
+  const double s = std::sqrt(std::max(0.0, r * r - u * u));
+  return 0.5 * (u * s + r * r * std::asin(std::clamp(u / r, -1.0, 1.0)));
+}
+inline double seg_moment(double u, double r) {
+  const double w = std::max(0.0, r * r - u * u);
+  return -w * std::sqrt(w) / 3.0;
+}
+}  // namespace
+
+Fastrip::Fastrip(const FastripOptions& options)
+    : options_(options), grid_(StripGrid::make(options.nx, options.ny, options.spacing_x, options.spacing_y)) {
+  const auto nx = static_cast<std::size_t>(grid_.nx);
+  sqc_.resize(nx);
+  An_.resize(nx + 1);
+  Bn_.resize(nx + 1);
+  for (std::size_t k = 0; k <= nx; ++k) {
+    An_[k] = seg_area(grid_.X[k], 1.0);
+    Bn_[k] = seg_moment(grid_.X[k], 1.0);
+  }
+  double par = 0.0;  // midpoint rule of (1 - X^2) along a strip (continuum 4/3)
+  for (std::size_t k = 0; k < nx; ++k) {
+    const double X = grid_.Xc[k];
+    sqc_[k] = std::sqrt(std::max(0.0, 1.0 - X * X));
+    par += (1.0 - X * X) * grid_.dX[k];
+  }
+  double s1 = 0.0, s2 = 0.0, s3 = 0.0;
+  for (std::size_t j = 0; j < grid_.t.size(); ++j) {
+    const double t = grid_.t[j], dY = grid_.dY[j];
+    s1 += t * dY;
+    s2 += t * t * dY;
+    s3 += t * t * t * dY;
+  }
+  load_scale_ = (4.0 / 3.0) / s2;
+  k_scale_ = s1 / (kPi / 2.0);
+  l3_scale_ = s3 * par / (kPi / 2.0);
+}
+
+ContactForces Fastrip::solve(const ContactInput& in, TangentialWorkspace* /*ws*/) const {
+  ContactForces out;
+  if (!check_tangential_input(in, "fastrip")) {
+    out.stick_fraction = 1.0;
+    return out;
+  }
+  const double a = in.patch.a;
+  const double b = in.patch.b;
+  const double Fz = in.patch.Fz;
+  const double mu = in.material.mu;
+  const double G = in.material.shear_modulus();
+  const KalkerCoefficients C = kalker_coefficients(a / b, in.material.nu);
+  const ReductionFactors& k = in.reduction;
+  const double pi2 = kPi * kPi;
+  // Strip compliances (step 3) and spin flexibilities (step 4), grid-consistent.
+  const double Kx = pi2 / (2.0 * G * C.C11 * k.k11) * k_scale_;
+  const double Ky = pi2 / (2.0 * G * C.C22 * k.k22) * k_scale_;
+  const double L3 = kPi * a * std::sqrt(a / b) / (4.0 * G * C.C23 * k.k23) * l3_scale_;
+  const double p0 = 3.0 * Fz / (2.0 * kPi * a * b) * load_scale_;
+  const double wx = in.creep.xi / Kx;
+  const double wy = in.creep.eta / Ky;
+  const double W = std::hypot(wx, wy);
+  const double ex = W > 0.0 ? -wx / W : 0.0;  // direction of the strip-theory traction
+  const double ey = W > 0.0 ? -wy / W : 0.0;
+  const double spy = in.creep.phi / L3;   // lateral spin slip / L3 per metre of x
+  const double spx = in.creep.phi / L3;   // longitudinal spin slip / L3 per metre of y
+
+  const auto nx = static_cast<std::size_t>(grid_.nx);
+  const auto ny = static_cast<std::size_t>(grid_.ny);
+  double Fx = 0.0, Fy = 0.0, Mz = 0.0, area = 0.0, stick = 0.0;
+  for (std::size_t j = 0; j < ny; ++j) {
+    const double y = b * grid_.Y[j];
+    const double aj = a * grid_.t[j];
+    const double gj = mu * p0 * grid_.t[j];  // mu p0_j: peak of the strip's bound
+    // Carter solution of the strip (step 2): adhesion centre d, half-length ar.
+    double d = 0.0, ar = aj;
+    if (W > 0.0) {
+      const double S = (gj > 0.0) ? W / gj : 1.0;
+      d = aj * std::min(S, 1.0);
+      ar = aj - d;
+    }
+    const double qs = gj / aj;  // mu p0_j / a_j
+    const double sgx = spx * y;  // longitudinal spin slip rate on this strip
+    double sx = 0.0, sy = 0.0, xprev = aj;
+    double fx = 0.0, fy = 0.0, mz = 0.0, adh = 0.0;
+    // Adhesion-ellipse integrals at the upper boundary of the current element
+    // (the leading edge x = a_j sits at u = +ar); reused element to element.
+    double Aup = 0.25 * kPi * ar * ar, Bup = 0.0;
+    bool in_adhesion = W > 0.0 && ar > 0.0;
+    for (std::size_t kk = 0; kk < nx; ++kk) {
+      const double x = aj * grid_.Xc[kk];
+      const double dx = xprev - x;
+      const double xm = 0.5 * (x + xprev);
+      const double w = aj * grid_.dX[kk];
+      // Strip-theory traction: analytic integral and first moment over the element.
+      double I = 0.0, M = 0.0, q = 0.0;
+      if (W > 0.0) {
+        I = aj * aj * (An_[kk] - An_[kk + 1]);
+        M = aj * aj * aj * (Bn_[kk] - Bn_[kk + 1]);
+        double qa = 0.0;
+        if (in_adhesion) {
+          const double u1 = std::max(aj * grid_.X[kk + 1] - d, -ar);
+          const double Alo = seg_area(u1, ar), Blo = seg_moment(u1, ar);
+          const double dA = Aup - Alo;
+          I -= dA;
+          M -= Bup - Blo + d * dA;
+          Aup = Alo;
+          Bup = Blo;
+          in_adhesion = u1 > -ar;
+          const double v = x - d;
+          qa = std::sqrt(std::max(0.0, ar * ar - v * v));
+        }
+        I *= qs;
+        M *= qs;
+        q = qs * (aj * sqc_[kk] - qa);
+      }
+      // Spin, FASTSIM-like (step 4), on top of the strip traction; then the bound.
+      sx += sgx * dx;
+      sy -= spy * xm * dx;
+      double tx = q * ex + sx, ty = q * ey + sy;
+      const double g = gj * sqc_[kk];
+      const double t2 = tx * tx + ty * ty;
+      if (t2 > g * g * (1.0 + 1e-12)) {
+        const double s = g / std::sqrt(t2);
+        tx *= s;
+        ty *= s;
+        sx = tx - q * ex;
+        sy = ty - q * ey;
+      } else if (x >= d - ar) {
+        adh += w;
+      }
+      fx += I * ex + sx * w;
+      fy += I * ey + sy * w;
+      mz += M * ey + x * sy * w;
+      xprev = x;
+    }
+    const double dy = b * grid_.dY[j];
+    Fx += fx * dy;
+    Fy += fy * dy;
+    Mz += (mz - y * fx) * dy;
+    area += 2.0 * aj * dy;
+    stick += adh * dy;
+  }
+  out.Fx = Fx;
+  out.Fy = Fy;
+  out.Mz = Mz;
+  out.stick_fraction = area > 0.0 ? stick / area : 1.0;
+  if (!std::isfinite(Fx) || !std::isfinite(Fy) || !std::isfinite(Mz))
+    throw NumericalError("fastrip: non-finite creep force (a = " + std::to_string(a) +
+                         " m, b = " + std::to_string(b) + " m, Fz = " + std::to_string(Fz) + " N)");
+  return out;
+}
+
+std::unique_ptr<TangentialModel> make_fastrip(const TangentialModelOptions& options) {
+  FastripOptions o;
+  if (options.grid != 0) {
+    if (options.grid < 2 || options.grid > 1000)
+      throw InputError("fastrip: grid must be in [2, 1000] elements (got " + std::to_string(options.grid) + ")");
+    o.nx = o.ny = options.grid;
+  }
+  return std::make_unique<Fastrip>(o);
+}
+
+}  // namespace railsim::contact

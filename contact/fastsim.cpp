@@ -1,0 +1,180 @@
+// FASTSIM (Kalker 1982); see fastsim.hpp for equations, units and signs.
+#include "contact/fastsim.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "contact/kalker_coefficients.hpp"
+#include "core/errors.hpp"
+
+namespace railsim::contact {
+
+namespace {
+constexpr double kPi = std::numbers::pi;
+
+// Node positions on [-1, 1] from +1 down to -1.
+std::vector<double> nodes_descending(int n, GridSpacing s) {
+  std::vector<double> x(static_cast<std::size_t>(n) + 1);
+  for (int k = 0; k <= n; ++k)
+    x[static_cast<std::size_t>(k)] = (s == GridSpacing::uniform) ? 1.0 - 2.0 * k / n : std::cos(kPi * k / n);
+  x.front() = 1.0;
+  x.back() = -1.0;
+  return x;
+}
+}  // namespace
+
+StripGrid StripGrid::make(int nx, int ny, GridSpacing spacing_x, GridSpacing spacing_y) {
+  if (nx < 2 || ny < 2 || nx > 100000 || ny > 100000)
+    throw InputError("strip grid: expected at least 2 elements per strip and 2 strips (got " +
+                     std::to_string(nx) + " x " + std::to_string(ny) + ")");
+  StripGrid g;
+  g.nx = nx;
+  g.ny = ny;
+  g.X = nodes_descending(nx, spacing_x);
+  g.Xc.resize(static_cast<std::size_t>(nx));
+  g.dX.resize(static_cast<std::size_t>(nx));
+  for (std::size_t k = 0; k < g.Xc.size(); ++k) {
+    g.Xc[k] = 0.5 * (g.X[k] + g.X[k + 1]);
+    g.dX[k] = g.X[k] - g.X[k + 1];
+  }
+  const std::vector<double> yb = nodes_descending(ny, spacing_y);  // strip boundaries
+  g.Y.resize(static_cast<std::size_t>(ny));
+  g.dY.resize(static_cast<std::size_t>(ny));
+  g.t.resize(static_cast<std::size_t>(ny));
+  for (std::size_t j = 0; j < g.Y.size(); ++j) {
+    g.Y[j] = 0.5 * (yb[j] + yb[j + 1]);
+    g.dY[j] = yb[j] - yb[j + 1];
+    g.t[j] = std::sqrt(std::max(0.0, 1.0 - g.Y[j] * g.Y[j]));
+  }
+  return g;
+}
+
+bool check_tangential_input(const ContactInput& in, const char* model) {
+  const HertzPatch& p = in.patch;
+  const auto bad = [&](const std::string& what) {
+    throw InputError(std::string(model) + ": " + what);
+  };
+  if (!std::isfinite(p.Fz)) bad("normal load Fz is not finite");
+  if (p.Fz <= 0.0) return false;
+  if (!(std::isfinite(p.a) && p.a > 0.0) || !(std::isfinite(p.b) && p.b > 0.0))
+    bad("semi-axes a, b must be positive and finite (got a = " + std::to_string(p.a) +
+        " m, b = " + std::to_string(p.b) + " m)");
+  if (!(std::isfinite(in.material.mu) && in.material.mu >= 0.0))
+    bad("friction coefficient mu must be >= 0 (got " + std::to_string(in.material.mu) + ")");
+  if (!(std::isfinite(in.material.E) && in.material.E > 0.0) ||
+      !(in.material.nu > 0.0 && in.material.nu <= 0.5))
+    bad("material needs E > 0 and nu in (0, 0.5]");
+  const ReductionFactors& k = in.reduction;
+  if (!(k.k11 > 0.0 && k.k22 > 0.0 && k.k23 > 0.0))
+    bad("reduction factors k11, k22, k23 must be positive");
+  if (!std::isfinite(in.creep.xi) || !std::isfinite(in.creep.eta) || !std::isfinite(in.creep.phi))
+    bad("creepages must be finite");
+  return true;
+}
+
+Fastsim::Fastsim(const FastsimOptions& options)
+    : options_(options), grid_(StripGrid::make(options.nx, options.ny, options.spacing_x, options.spacing_y)) {
+  const auto nx = static_cast<std::size_t>(grid_.nx);
+  const auto ny = static_cast<std::size_t>(grid_.ny);
+  bound_shape_.resize(ny * nx);
+  // Discretised load of the pressure shape (midpoint rule), in units of
+  // a b p0: continuum 2 pi / 3 (elliptic), pi / 2 (parabolic).
+  double load = 0.0;
+  for (std::size_t j = 0; j < ny; ++j) {
+    const double tj = grid_.t[j];
+    double strip = 0.0;
+    for (std::size_t k = 0; k < nx; ++k) {
+      const double X = grid_.Xc[k];
+      const double w = std::max(0.0, 1.0 - X * X);
+      const double s = (options_.bound == TractionBound::elliptic) ? tj * std::sqrt(w) : tj * tj * w;
+      bound_shape_[j * nx + k] = s;
+      strip += s * grid_.dX[k];
+    }
+    load += strip * tj * grid_.dY[j];  // dx = a t_j dX
+  }
+  const double exact = (options_.bound == TractionBound::elliptic) ? 2.0 * kPi / 3.0 : kPi / 2.0;
+  load_scale_ = exact / load;
+}
+
+ContactForces Fastsim::solve(const ContactInput& in, TangentialWorkspace* /*ws*/) const {
+  ContactForces out;
+  if (!check_tangential_input(in, "fastsim")) {
+    out.stick_fraction = 1.0;
+    return out;
+  }
+  const double a = in.patch.a;
+  const double b = in.patch.b;
+  const double Fz = in.patch.Fz;
+  const double G = in.material.shear_modulus();
+  const KalkerCoefficients C = kalker_coefficients(a / b, in.material.nu);
+  const double L1 = 8.0 * a / (3.0 * G * C.C11 * in.reduction.k11);
+  const double L2 = 8.0 * a / (3.0 * G * C.C22 * in.reduction.k22);
+  const double L3 = kPi * a * std::sqrt(a / b) / (4.0 * G * C.C23 * in.reduction.k23);
+  const double p0 = ((options_.bound == TractionBound::elliptic) ? 3.0 * Fz / (2.0 * kPi * a * b)
+                                                                 : 2.0 * Fz / (kPi * a * b)) *
+                    load_scale_;
+  const double gmax = in.material.mu * p0;
+  const double sx = in.creep.xi / L1;    // traction gradient from xi [Pa/m]
+  const double sy = in.creep.eta / L2;   // from eta
+  const double sp = in.creep.phi / L3;   // from spin, per metre of lever arm [Pa/m^2]
+
+  const auto nx = static_cast<std::size_t>(grid_.nx);
+  const auto ny = static_cast<std::size_t>(grid_.ny);
+  double Fx = 0.0, Fy = 0.0, Mz = 0.0, area = 0.0, stick = 0.0;
+  for (std::size_t j = 0; j < ny; ++j) {
+    const double y = b * grid_.Y[j];
+    const double aj = a * grid_.t[j];
+    const double gx = sx - sp * y;  // longitudinal rigid slip / L, uniform on the strip
+    const double* bnd = &bound_shape_[j * nx];
+    double px = 0.0, py = 0.0, xprev = aj;
+    double fx = 0.0, fy = 0.0, mz = 0.0, adh = 0.0;
+    for (std::size_t k = 0; k < nx; ++k) {
+      const double x = aj * grid_.Xc[k];
+      const double dx = xprev - x;
+      const double xm = 0.5 * (x + xprev);
+      px -= gx * dx;
+      py -= (sy + sp * xm) * dx;
+      const double g = gmax * bnd[k];
+      const double w = aj * grid_.dX[k];  // element length
+      const double q2 = px * px + py * py;
+      if (q2 > g * g) {
+        const double s = g / std::sqrt(q2);
+        px *= s;
+        py *= s;
+      } else {
+        adh += w;
+      }
+      fx += px * w;
+      fy += py * w;
+      mz += x * py * w;
+      xprev = x;
+    }
+    const double dy = b * grid_.dY[j];
+    Fx += fx * dy;
+    Fy += fy * dy;
+    Mz += (mz - y * fx) * dy;
+    area += 2.0 * aj * dy;
+    stick += adh * dy;
+  }
+  out.Fx = Fx;
+  out.Fy = Fy;
+  out.Mz = Mz;
+  out.stick_fraction = area > 0.0 ? stick / area : 1.0;
+  if (!std::isfinite(Fx) || !std::isfinite(Fy) || !std::isfinite(Mz))
+    throw NumericalError("fastsim: non-finite creep force (a = " + std::to_string(a) +
+                         " m, b = " + std::to_string(b) + " m, Fz = " + std::to_string(Fz) + " N)");
+  return out;
+}
+
+std::unique_ptr<TangentialModel> make_fastsim(const TangentialModelOptions& options) {
+  FastsimOptions o;  // 20 x 20
+  if (options.grid != 0) {
+    if (options.grid < 2 || options.grid > 1000)
+      throw InputError("fastsim: grid must be in [2, 1000] elements (got " + std::to_string(options.grid) + ")");
+    o.nx = o.ny = options.grid;
+  }
+  return std::make_unique<Fastsim>(o);
+}
+
+}  // namespace railsim::contact
