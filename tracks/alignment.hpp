@@ -31,7 +31,7 @@ namespace railsim::tracks {
 struct AlignmentState {
   double s = 0.0;            // distance along the centre line [m]
   double x = 0.0, y = 0.0;   // centre-line position in the ground plane [m]
-  double heading = 0.0;      // psi: angle of the tangent from the ground x axis [rad], CCW
+  double heading = 0.0;      // psi: angle of the tangent from the ground x axis [rad], CCW, unwrapped (continuous)
   double curvature = 0.0;    // kappa [1/m], > 0 turning left
   double dcurvature = 0.0;   // dkappa/ds [1/m^2]
   double d2curvature = 0.0;  // d2kappa/ds2 [1/m^3] (Bloss / cosine transitions)
