@@ -2,6 +2,7 @@
 #include "contact/geometry/semi_hertz.hpp"
 
 #include <algorithm>
+#include <boost/math/interpolators/cardinal_cubic_b_spline.hpp>
 #include <boost/math/quadrature/tanh_sinh.hpp>
 #include <cmath>
 #include <cstdio>
@@ -12,7 +13,6 @@
 namespace railsim::contact {
 
 struct SemiHertzWorkspace::Impl {
-  boost::math::quadrature::tanh_sinh<double> quad{8};
   std::vector<double> g, xl, f;
 };
 
@@ -22,15 +22,46 @@ SemiHertzWorkspace::~SemiHertzWorkspace() = default;
 namespace {
 constexpr double kPi = 3.14159265358979323846;
 
-// int_{d1}^{d2} int_{-L}^{L} sqrt(1 - x^2/L^2) / sqrt(x^2 + d^2) dx dd.
-double strip_kernel(boost::math::quadrature::tanh_sinh<double>& quad, double L, double d1, double d2) {
-  auto f = [&](double th) {
-    const double s = std::sin(th), c = std::cos(th);
-    const double ls = L * s;
-    if (ls <= 0.0) return 0.0;
-    return L * c * c * (std::asinh(d2 / ls) - std::asinh(d1 / ls));
-  };
-  return 2.0 * quad.integrate(f, 0.0, kPi / 2, 1e-9);
+// Strip kernel int_{d1}^{d2} int_{-L}^{L} sqrt(1 - x^2/L^2) / sqrt(x^2 + d^2) dx dd
+// = L [G(d2/L) - G(d1/L)] with G(eta) = 2 int_0^{pi/2} cos^2(t) asinh(eta / sin t) dt
+// (inner integral over d in closed form), G odd. G is tabulated once on a
+// uniform grid in u = asinh(eta) (cubic B-spline) and continued by its
+// asymptote G' = (pi/2)/eta for eta > 1e7.
+class StripKernel {
+ public:
+  StripKernel() {
+    boost::math::quadrature::tanh_sinh<double> quad(8);
+    std::vector<double> g(kN);
+    for (int i = 0; i < kN; ++i) {
+      const double eta = std::sinh(i * kDu);
+      auto f = [eta](double th) {
+        const double sn = std::sin(th), c = std::cos(th);
+        return sn > 0.0 ? c * c * std::asinh(eta / sn) : 0.0;
+      };
+      g[static_cast<std::size_t>(i)] = i == 0 ? 0.0 : 2.0 * quad.integrate(f, 0.0, kPi / 2, 1e-12);
+    }
+    gmax_ = g.back();
+    spline_ = std::make_unique<boost::math::interpolators::cardinal_cubic_b_spline<double>>(g.begin(), g.end(), 0.0, kDu);
+  }
+  double G(double eta) const {
+    const double a = std::abs(eta);
+    const double u = std::asinh(a);
+    const double v = u <= kUmax ? (*spline_)(u) : gmax_ + 0.5 * kPi * (u - kUmax);
+    return eta < 0 ? -v : v;
+  }
+  double operator()(double L, double d1, double d2) const { return L * (G(d2 / L) - G(d1 / L)); }
+
+ private:
+  static constexpr int kN = 4001;
+  static constexpr double kUmax = 16.0;  // eta up to sinh(16) ~ 4.4e6
+  static constexpr double kDu = kUmax / (kN - 1);
+  double gmax_ = 0.0;
+  std::unique_ptr<boost::math::interpolators::cardinal_cubic_b_spline<double>> spline_;
+};
+
+const StripKernel& strip_kernel() {
+  static const StripKernel k;  // immutable after construction
+  return k;
 }
 }  // namespace
 
@@ -43,6 +74,7 @@ SemiHertzResult semi_hertz_from_load(const GapProfile& gap, double Fn, const Mat
   const double dq = (gap.q.back() - gap.q.front()) / static_cast<double>(n - 1);
   if (!(dq > 0.0)) throw InputError("semi_hertz: gap profile q must increase");
   auto& im = ws.impl();
+  const StripKernel& kernel = strip_kernel();
   im.g.assign(n, 0.0);
   im.xl.assign(n, 0.0);
   im.f.assign(n, 0.0);
@@ -95,7 +127,7 @@ SemiHertzResult semi_hertz_from_load(const GapProfile& gap, double Fn, const Mat
       im.f[j] = std::sqrt(g / dv);
       I1 += im.f[j] * 0.5 * kPi * im.xl[j] * dq;
       const double d = gap.q[j] - gap.q[k0];
-      I2 += im.f[j] * strip_kernel(im.quad, im.xl[j], d - 0.5 * dq, d + 0.5 * dq);
+      I2 += im.f[j] * kernel(im.xl[j], d - 0.5 * dq, d + 0.5 * dq);
     }
     if (!(I1 > 0.0 && I2 > 0.0))
       throw NumericalError("semi_hertz: empty contact patch (check the gap profile around the contact point)");

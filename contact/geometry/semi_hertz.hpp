@@ -23,8 +23,9 @@
 //    (Boussinesq, two identical half-spaces: delta = 1/(pi E*) int p / rho dA,
 //    as in Kik & Piotrowski 2008), so N = pi E* delta I1 / I2 with
 //    I1 = int f dA, I2 = int f / rho dA. The strip integrals of 1/rho are done
-//    in closed form across the strip width (asinh) and by tanh-sinh quadrature
-//    along x. For a quadratic gap the result is exactly Hertz.
+//    in closed form across the strip width (asinh) and along x by a kernel
+//    G(d/L) tabulated once (tanh-sinh quadrature, cubic B-spline). For a
+//    quadratic gap the result is Hertz up to the strip discretisation.
 // Units SI (m, N, Pa). Load given as the normal force N.
 #pragma once
 
