@@ -57,7 +57,7 @@ TEST_CASE("elliptic integrals: parameter m = e^2 vs Boost's modulus k = e", "[he
   }
 }
 
-TEST_CASE("classical m, n, r table (physics-reference 1.3) to printed precision", "[hertz]") {
+TEST_CASE("classical m n r table (physics-reference 1.3) to printed precision", "[hertz]") {
   const auto t = railsim::results::read_csv(railsim::test::data_path("hertz_mnr_table.csv"));
   REQUIRE(t.rows.size() == 20);
   for (std::size_t i = 0; i < t.rows.size(); ++i) {

@@ -82,7 +82,7 @@ TEST_CASE("every saturation law tends to mu Fz at large creepage", "[saturation]
   }
 }
 
-TEST_CASE("reduction factor k scales the initial slope by k, not the saturated level", "[saturation]") {
+TEST_CASE("reduction factor k scales the initial slope by k and not the saturated level", "[saturation]") {
   const ContactInput in = tread_contact();
   const double muN = in.material.mu * in.patch.Fz;
   const double d = 1e-10;
@@ -149,7 +149,7 @@ TEST_CASE("Kalker linear theory: test vector of physics-reference 2.1", "[satura
   CHECK(f.f23 == Approx(3.6482e4).epsilon(0.005));
 }
 
-TEST_CASE("Polach: kA, kS and the friction decrease", "[saturation][polach]") {
+TEST_CASE("Polach: kA and kS and the friction decrease", "[saturation][polach]") {
   const ContactInput in0 = tread_contact();
   const LinearCoefficients f = linear_coefficients(in0);
   const auto dry = make_polach_model(PolachParameters::dry());

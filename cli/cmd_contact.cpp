@@ -1,0 +1,68 @@
+// `railsim contact CASES.yaml --model NAME --out results.csv [--reduction R]`:
+// runs one tangential contact model on every case of a case file (format in
+// support_contact_cases.hpp) and writes one CSV row per case with the patch,
+// the forces, the validity flag and the measured cost per call.
+#include <spdlog/spdlog.h>
+
+#include <string>
+
+#include "cli/commands.hpp"
+#include "cli/support_contact_cases.hpp"
+#include "contact/reduction.hpp"
+#include "contact/registry.hpp"
+
+namespace railsim::cli {
+
+namespace {
+
+struct ContactOptions {
+  std::string cases;
+  std::string model;
+  std::string out;
+  std::string reduction;
+  int grid = 0;
+  double tolerance = 0.0;
+};
+
+int run_contact(const ContactOptions& o) {
+  contact::TangentialModelOptions mo;
+  mo.grid = o.grid;
+  mo.tolerance = o.tolerance;
+  const auto model = contact::make_tangential_model(o.model, mo);  // unknown -> InputError with the list
+  ContactCaseSet set = load_contact_cases(o.cases);
+  if (!o.reduction.empty()) set_reduction(set, contact::parse_reduction(o.reduction, "--reduction"));
+  const auto ws = model->make_workspace();
+  results::CsvWriter csv(o.out, contact_csv_columns());
+  int invalid = 0;
+  for (const auto& c : set.cases) {
+    const TimedForces r = solve_timed(*model, c.input, ws.get());
+    if (!r.forces.valid) {
+      ++invalid;
+      spdlog::warn("case '{}': {} outside its validity domain: {}", c.id, o.model, r.forces.reason);
+    }
+    write_contact_row(csv, c, model->name(), r);
+  }
+  spdlog::info("{} cases with model {} (reduction {}): {} flagged invalid; results in {}", set.cases.size(),
+               o.model, contact::describe_reduction(set.reduction), invalid, o.out);
+  return 0;
+}
+
+}  // namespace
+
+void register_contact(CLI::App& app, CommandRunner& run) {
+  auto opts = std::make_shared<ContactOptions>();
+  auto* cmd = app.add_subcommand("contact", "Run a tangential contact model on a file of contact cases");
+  cmd->add_option("cases", opts->cases, "Case file (YAML: material, optional reduction, cases)")->required();
+  cmd->add_option("--model", opts->model, "Tangential model: " + contact::tangential_model_names())->required();
+  cmd->add_option("--out", opts->out, "Result CSV file")->required();
+  cmd->add_option("--reduction", opts->reduction,
+                  "Reduction of Kalker's coefficients (overrides the file): none, elastic_fe, "
+                  "elastoplastic_fe, third_body, one number k, or k11,k22,k23");
+  cmd->add_option("--grid", opts->grid, "Discretisation of grid-based models (0 = model default)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--tolerance", opts->tolerance, "Solver tolerance of iterative models (0 = model default)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->callback([&run, opts] { run = [opts] { return run_contact(*opts); }; });
+}
+
+}  // namespace railsim::cli
