@@ -54,10 +54,13 @@ NormalResult NormalSolver::run(InfluenceOperator& op, const double* h, bool load
 
   double Gold = 1.0, gbar = 0.0;
   bool conjugate = false;
+  // u = A p is updated incrementally (u - tau A t) while no pressure is
+  // clipped or added; otherwise, and every 25 iterations, recomputed.
+  bool u_valid = false;
   std::fill(t_.begin(), t_.end(), 0.0);
   for (int it = 1; it <= opt.max_iterations; ++it) {
     res.iterations = it;
-    op.normal(p, u_.data());
+    if (!u_valid || it % 25 == 0) op.normal(p, u_.data());
     // Gap of the deformed surfaces (without the approach), mean over the contact.
     int nc = 0;
     double gsum = 0.0;
@@ -86,9 +89,13 @@ NormalResult NormalSolver::run(InfluenceOperator& op, const double* h, bool load
       if (p[i] > 0.0) num += gap_[i] * t_[i], den += (r_[i] - rbar) * t_[i];
     const double tau = (den != 0.0) ? num / den : 0.0;
     std::copy(p, p + n, pold_.begin());
-    bool overlap = false;
+    bool overlap = false, clipped = false;
     for (int i = 0; i < n; ++i) {
-      if (pold_[i] > 0.0) p[i] = std::max(0.0, p[i] - tau * t_[i]);
+      if (pold_[i] > 0.0) {
+        const double v = p[i] - tau * t_[i];
+        clipped |= v < 0.0;
+        p[i] = std::max(0.0, v);
+      }
     }
     for (int i = 0; i < n; ++i)
       if (pold_[i] <= 0.0 && gap_[i] < 0.0) {
@@ -96,6 +103,9 @@ NormalResult NormalSolver::run(InfluenceOperator& op, const double* h, bool load
         overlap = true;
       }
     conjugate = !overlap;
+    u_valid = !overlap && !clipped;
+    if (u_valid)
+      for (int i = 0; i < n; ++i) u_[i] -= tau * r_[i];
     double load = 0.0;
     for (int i = 0; i < n; ++i) load += p[i];
     load *= dA;
@@ -103,6 +113,8 @@ NormalResult NormalSolver::run(InfluenceOperator& op, const double* h, bool load
       if (!(load > 0.0)) throw NumericalError("mim normal solver: pressure vanished (no contact)");
       const double s = target / load;
       for (int i = 0; i < n; ++i) p[i] *= s;
+      if (u_valid)
+        for (int i = 0; i < n; ++i) u_[i] *= s;
       load = target;
     }
     double change = 0.0;

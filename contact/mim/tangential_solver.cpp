@@ -16,10 +16,12 @@ constexpr int kMaxMemory = 32;
 using SmallMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxMemory, kMaxMemory>;
 using SmallVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxMemory, 1>;
 
+using ConstVec = Eigen::Map<const Eigen::VectorXd>;
+using ConstMat = Eigen::Map<const Eigen::MatrixXd>;
+
+// Vectorised dot product (Eigen uses several accumulators).
 double dot(const double* a, const double* b, std::size_t n) {
-  double s = 0.0;
-  for (std::size_t i = 0; i < n; ++i) s += a[i] * b[i];
-  return s;
+  return ConstVec(a, static_cast<Eigen::Index>(n)).dot(ConstVec(b, static_cast<Eigen::Index>(n)));
 }
 }  // namespace
 
@@ -76,7 +78,7 @@ void TangentialSolver::sweep(InfluenceOperator& op, TangentialProblem kind, cons
         tx = -(wx[q] + vx_[q] - D * px[q]) / D;
         ty = -(wy[q] + vy_[q] - D * py[q]) / D;
       }
-      const double t = std::hypot(tx, ty);
+      const double t = std::sqrt(tx * tx + ty * ty);
       if (t <= bound[q]) {
         gx[q] = tx;
         gy[q] = ty;
@@ -148,10 +150,9 @@ TangentialResult TangentialSolver::solve(InfluenceOperator& op, TangentialProble
         dG[i] = g_[i] - gprev_[i];
       }
       k = std::min(k + 1, m);
-      for (int a = 0; a < k; ++a) {
-        const double v = dot(dF, dF_.data() + a * N, N);
-        gram_(head, a) = gram_(a, head) = v;
-      }
+      const ConstMat F(dF_.data(), static_cast<Eigen::Index>(N), k);
+      const SmallVector col = F.transpose() * ConstVec(dF, static_cast<Eigen::Index>(N));
+      for (int a = 0; a < k; ++a) gram_(head, a) = gram_(a, head) = col(a);
       head = (head + 1) % m;
     }
     std::copy(f_.begin(), f_.end(), fprev_.begin());
@@ -159,19 +160,11 @@ TangentialResult TangentialSolver::solve(InfluenceOperator& op, TangentialProble
     std::copy(g_.begin(), g_.end(), x_.begin());
     if (k > 0) {
       SmallMatrix M = gram_.topLeftCorner(k, k);
-      SmallVector r(k);
-      double trace = 0.0;
-      for (int a = 0; a < k; ++a) {
-        r(a) = dot(dF_.data() + a * N, f_.data(), N);
-        trace += M(a, a);
-      }
-      M.diagonal().array() += 1e-12 * trace / k;
+      const Eigen::Index NN = static_cast<Eigen::Index>(N);
+      const SmallVector r = ConstMat(dF_.data(), NN, k).transpose() * ConstVec(f_.data(), NN);
+      M.diagonal().array() += 1e-12 * M.trace() / k;
       const SmallVector gam = M.ldlt().solve(r);
-      for (int a = 0; a < k; ++a) {
-        const double* dG = dG_.data() + a * N;
-        const double ga = gam(a);
-        for (std::size_t i = 0; i < N; ++i) x_[i] -= ga * dG[i];
-      }
+      Eigen::Map<Eigen::VectorXd>(x_.data(), NN).noalias() -= ConstMat(dG_.data(), NN, k) * gam;
     }
   }
   for (int q = 0; q < n; ++q) {
