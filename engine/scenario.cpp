@@ -3,6 +3,7 @@
 
 #include <filesystem>
 
+#include "contact/hertz.hpp"
 #include "contact/reduction.hpp"
 #include "core/errors.hpp"
 #include "engine/conical_geometry.hpp"
@@ -27,7 +28,7 @@ std::shared_ptr<const ContactGeometry> load_geometry(const InputNode& g, const s
   const std::string type = g.string("type");
   if (type == "conical") {
     g.allow_only({"type", "r0", "conicity", "l0", "contact_angle", "flange_clearance", "flange_stiffness",
-                  "max_shift"});
+                  "max_shift", "curvatures"});
     ConicalParams p;
     p.r0 = g.in_range("r0", 0.1, 1.5);
     p.conicity = g.in_range("conicity", 0.0, 1.0);
@@ -38,6 +39,11 @@ std::shared_ptr<const ContactGeometry> load_geometry(const InputNode& g, const s
     if (p.flange_clearance < 0) g.at("flange_clearance").fail("expected a non-negative number");
     if (p.flange_stiffness < 0) g.at("flange_stiffness").fail("expected a non-negative number");
     p.max_shift = g.has("max_shift") ? g.in_range("max_shift", 0.0, 0.2, true) : 0.05;
+    if (auto cv = g.find("curvatures")) {
+      cv->allow_only({"A", "B"});
+      p.A = cv->positive("A");
+      p.B = cv->positive("B");
+    }
     return std::make_shared<ConicalGeometry>(p);
   }
   if (type == "table") {
@@ -128,12 +134,15 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
   }
   if (auto sp = c.find("spin")) co.spin = sp->as_bool();
   const bool table = c.at("geometry").string("type") == "table";
-  if (co.tangential == "coefficients" && !table && co.f11 <= 0)
-    c.fail("tangential 'coefficients' with conical wheels needs 'creep_coefficients' (f11, f22, ...)");
-  if (co.tangential != "coefficients" && !table && co.patch_a <= 0)
-    c.fail("tangential model '" + co.tangential + "' with conical wheels needs 'patch' (a, b, N_ref)");
-  m.coupling = WheelRailCoupling(co);
-  const double q0 = c.has("static_approach") ? c.in_range("static_approach", 0.0, 1e-2, true) : 7e-5;
+  WheelContact c0;
+  geo->evaluate(0.0, c0);
+  const bool hertz = !table && c0.A > 0 && c0.B > 0;
+  if (!table && co.patch_a <= 0 && !hertz && !(co.tangential == "coefficients" && co.f11 > 0))
+    c.fail("conical wheels need 'creep_coefficients' (f11, f22, ...; tangential 'coefficients' only), 'patch' "
+           "(a, b, N_ref) or geometry 'curvatures' (A, B) for Hertz");
+  if (hertz && (co.patch_a > 0 || c.has("static_approach")))
+    c.fail("give either geometry 'curvatures' (Hertz) or 'patch' / 'static_approach', not both");
+  double q0 = c.has("static_approach") ? c.in_range("static_approach", 0.0, 1e-2, true) : 7e-5;
 
   // Integrator.
   if (auto in = root.find("integrator")) {
@@ -158,6 +167,16 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
   }
 
   finalize_model(m);
+  if (hertz) {
+    // Hertz patch and approach at the static load of the first wheel (a, b ~ N^{1/3} for fixed A, B).
+    const double Ns = m.wheelsets.front().static_load[0];
+    const contact::HertzPatch hp = contact::hertz_from_load(c0.A, c0.B, Ns, co.material);
+    co.patch_a = hp.a;
+    co.patch_b = hp.b;
+    co.N_ref = Ns;
+    q0 = hp.approach;
+  }
+  m.coupling = WheelRailCoupling(co);
   for (auto& w : m.wheelsets) w.hertz_q0[0] = w.hertz_q0[1] = q0;
   sc.x0 = Eigen::VectorXd::Zero(m.n_states);
   if (auto init = root.find("initial")) {

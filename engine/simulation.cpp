@@ -1,12 +1,21 @@
 // Time simulation and channels; see simulation.hpp.
 #include "engine/simulation.hpp"
 
+#include <time.h>
+
 #include <chrono>
 #include <cmath>
 
 #include "engine/system.hpp"
 
 namespace railsim::engine {
+namespace {
+double thread_cpu_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+}  // namespace
 
 RunSummary simulate(const Model& model, const IntegratorOptions& options, const Eigen::VectorXd& x0,
                     double duration, double dt_out, const Observer& observer) {
@@ -18,6 +27,7 @@ RunSummary simulate(const Model& model, const IntegratorOptions& options, const 
   sum.max_abs_lateral.assign(model.wheelsets.size(), 0.0);
   Eigen::VectorXd x = x0, xdot(model.n_states);
   const auto start = std::chrono::steady_clock::now();
+  const double cpu0 = thread_cpu_seconds();
   auto report = [&](double t) {
     rhs_or_throw(model, rec, t, x.data(), xdot.data());
     for (std::size_t w = 0; w < model.wheelsets.size(); ++w) {
@@ -36,6 +46,8 @@ RunSummary simulate(const Model& model, const IntegratorOptions& options, const 
     report(t);
   }
   sum.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  sum.cpu_time = thread_cpu_seconds() - cpu0;
+  sum.real_time_factor_cpu = sum.cpu_time > 0 ? duration / sum.cpu_time : 0.0;
   sum.simulated_time = duration;
   sum.real_time_factor = sum.wall_time > 0 ? duration / sum.wall_time : 0.0;
   sum.stats = integ->stats();

@@ -22,6 +22,8 @@ struct RunSummary {
   double simulated_time = 0.0;
   double wall_time = 0.0;         // [s]
   double real_time_factor = 0.0;  // simulated / wall
+  double cpu_time = 0.0;          // CPU time of this thread [s]
+  double real_time_factor_cpu = 0.0;  // simulated / CPU time (independent of machine load)
   std::vector<double> max_abs_lateral;  // per wheelset [m]
   long invalid_contact_calls = 0;
   std::string first_invalid_reason;

@@ -155,7 +155,8 @@ bool rhs(const Model& model, Data& d, double t, const double* x, double* xdot) {
     }
     GenForce& f = d.force[b];
     f.fill(0.0);
-    model.track->sample(d.s + body.position.x(), d.track[b]);
+    if (body.wheelset >= 0) model.track->sample(d.s + body.position.x(), d.track[b]);
+    else model.track->sample_alignment(d.s + body.position.x(), d.track[b]);
     const FrameLoads L = frame_loads(d.track[b], d.V, body.mass, body.inertia.z());
     f[kLat] += L.Fy;
     f[kVert] += L.Fz;

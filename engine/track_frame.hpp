@@ -39,6 +39,9 @@ class TrackReference {
  public:
   virtual ~TrackReference() = default;
   virtual void sample(double s, TrackSample& out) const = 0;
+  // Alignment only (curvature, cant; irregularities left at zero): enough for
+  // bodies without wheel-rail contact.
+  virtual void sample_alignment(double s, TrackSample& out) const { sample(s, out); }
   virtual std::string describe() const = 0;
 };
 

@@ -19,6 +19,14 @@ void TrackInput::sample(double s, TrackSample& out) const {
   out.dvert_right = ir.right_vertical_slope();
 }
 
+void TrackInput::sample_alignment(double s, TrackSample& out) const {
+  const tracks::AlignmentState t = track_->alignment_at(s);
+  out = TrackSample{};
+  out.curvature = t.curvature;
+  out.curvature_rate = t.dcurvature;
+  out.cant = t.cant_angle;
+}
+
 std::string TrackInput::describe() const {
   std::string s = "track '" + track_->name() + "', " + std::to_string(track_->length()) + " m";
   for (const auto& c : track_->irregularities().components()) s += "; " + c->describe();

@@ -16,6 +16,7 @@ class TrackInput final : public TrackReference {
  public:
   explicit TrackInput(std::shared_ptr<const tracks::Track> track) : track_(std::move(track)) {}
   void sample(double s, TrackSample& out) const override;
+  void sample_alignment(double s, TrackSample& out) const override;
   std::string describe() const override;
   const tracks::Track& track() const { return *track_; }
 

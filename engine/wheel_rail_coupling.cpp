@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "contact/kalker_coefficients.hpp"
 #include "contact/reduction.hpp"
 #include "contact/registry.hpp"
 #include "core/errors.hpp"
@@ -49,10 +50,18 @@ contact::ContactForces WheelRailCoupling::forces(const WheelContact& g, double N
       f33 = opt_.f33 * r23 * r23;
     } else {
       const double ab = a * b, c = std::sqrt(ab);
-      f11 = G_ * ab * g.C11;
-      f22 = G_ * ab * g.C22;
-      f23 = G_ * ab * c * g.C23;
-      f33 = 0.0;  // C33 not in the tables (physics-reference §13 item 1)
+      double C11 = g.C11, C22 = g.C22, C23 = g.C23, C33 = 0.0;  // C33 not in the tables (physics-reference §13 item 1)
+      if (C11 <= 0.0 && a > 0 && b > 0) {  // no table coefficients: Kalker's table at this a/b (contact library)
+        const contact::KalkerCoefficients k = contact::kalker_coefficients(a / b, opt_.material.nu);
+        C11 = k.C11;
+        C22 = k.C22;
+        C23 = k.C23;
+        C33 = k.C33;
+      }
+      f11 = G_ * ab * C11;
+      f22 = G_ * ab * C22;
+      f23 = G_ * ab * c * C23;
+      f33 = G_ * ab * ab * C33;
     }
     f11 *= opt_.reduction.k11;
     f22 *= opt_.reduction.k22;

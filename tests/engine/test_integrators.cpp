@@ -106,3 +106,25 @@ TEST_CASE("a run that leaves the contact geometry stops with time, place and mod
   CHECK(msg.find("t = ") != std::string::npos);
   CHECK(msg.find("lateral wheelset") != std::string::npos);
 }
+
+TEST_CASE("Manchester coach on ERRI track: benchmark tolerances against a tight reference", "[engine][integrator][.slow]") {
+  // The benchmark scene (bench/bench_engine.cpp) runs Odeint at the scenario's
+  // tolerances; its lateral-shift history must stay within 1 % of the peak of
+  // a tight CVODE reference.
+  auto sc = engine::load_scenario(test::source_path("scenarios/manchester_coach_200_erri.yaml"));
+  sc.duration = 4.0;
+  engine::IntegratorOptions ref = sc.integrator;
+  ref.method = "cvode_bdf";
+  ref.rtol = 1e-9;
+  ref.atol = 1e-12;
+  const auto yref = lateral_history(sc, ref);
+  double peak = 0;
+  for (double v : yref) peak = std::max(peak, std::abs(v));
+  engine::RunSummary sum;
+  const auto y = lateral_history(sc, sc.integrator, &sum);
+  double err = 0;
+  for (std::size_t i = 0; i < y.size(); ++i) err = std::max(err, std::abs(y[i] - yref[i]));
+  INFO(sum.integrator << " rtol " << sc.integrator.rtol << ": max deviation " << err / peak * 100 << " % of peak "
+                      << peak * 1e3 << " mm; steps " << sum.stats.steps << ", rhs calls " << sum.stats.rhs_calls);
+  CHECK(err < 0.01 * peak);
+}

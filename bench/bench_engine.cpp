@@ -1,0 +1,82 @@
+// Speed of the multibody engine: real-time factor (simulated time / wall
+// time, one core) of whole runs, and the cost of one right-hand-side
+// evaluation. Scenes (scenarios/*.yaml):
+//  - Manchester coach, 200 km/h, straight track with ERRI B176 low-level
+//    irregularities, Kalker + CHOPAYA, lateral wheelset model (target >= 100x);
+//  - the same with the full wheelset model;
+//  - the Cooperrider car at 100 m/s (contact-geometry table, full model).
+// Counters: "rtf" = real-time factor of one run of `duration` seconds on wall
+// time, "rtf_cpu" on the thread's CPU time (the machine may be shared).
+#include <benchmark/benchmark.h>
+
+#include <filesystem>
+#include <string>
+
+#include "engine/scenario.hpp"
+#include "engine/simulation.hpp"
+#include "engine/system.hpp"
+
+namespace {
+
+std::string scenario_path(const char* file) {
+  return (std::filesystem::path(__FILE__).parent_path().parent_path() / "scenarios" / file).string();
+}
+
+void run_scene(benchmark::State& state, const char* file, const char* wheelset_model, const char* method) {
+  using namespace railsim::engine;
+  const auto path = scenario_path(file);
+  // Build the scene once; the wheelset model and integrator are overridden here.
+  auto text_model = std::string(wheelset_model);
+  Scenario sc = load_scenario(path);
+  if (text_model == "full" && sc.model.wheelset_model != WheelsetModel::full) {
+    sc.model.wheelset_model = WheelsetModel::full;
+    finalize_model(sc.model);
+    for (auto& w : sc.model.wheelsets) w.hertz_q0[0] = w.hertz_q0[1] = 7e-5;
+    sc.x0 = Eigen::VectorXd::Zero(sc.model.n_states);
+  }
+  IntegratorOptions o = sc.integrator;
+  o.method = method;
+  double rtf = 0, rtf_cpu = 0, steps = 0, calls = 0;
+  for (auto _ : state) {
+    const RunSummary r = simulate(sc.model, o, sc.x0, sc.duration, sc.output_interval);
+    rtf = r.real_time_factor;
+    rtf_cpu = r.real_time_factor_cpu;
+    steps = double(r.stats.steps);
+    calls = double(r.stats.rhs_calls);
+  }
+  state.counters["rtf"] = rtf;
+  state.counters["rtf_cpu"] = rtf_cpu;
+  state.counters["steps"] = steps;
+  state.counters["rhs_calls"] = calls;
+  state.counters["sim_s"] = sc.duration;
+}
+
+void rhs_eval(benchmark::State& state, const char* file) {
+  using namespace railsim::engine;
+  const Scenario sc = load_scenario(scenario_path(file));
+  Data d(sc.model);
+  Eigen::VectorXd x = sc.x0, xd(sc.model.n_states);
+  double t = 0;
+  for (auto _ : state) {
+    rhs(sc.model, d, t, x.data(), xd.data());
+    benchmark::DoNotOptimize(xd.data());
+    t += 1e-4;
+  }
+}
+
+}  // namespace
+
+BENCHMARK_CAPTURE(run_scene, manchester_200_lateral_dopri5, "manchester_coach_200_erri.yaml", "lateral", "odeint_dopri5")
+    ->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK_CAPTURE(run_scene, manchester_200_lateral_erk, "manchester_coach_200_erri.yaml", "lateral", "arkode_erk")
+    ->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK_CAPTURE(run_scene, manchester_200_lateral_cvode, "manchester_coach_200_erri.yaml", "lateral", "cvode_bdf")
+    ->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK_CAPTURE(run_scene, manchester_200_full_cvode, "manchester_coach_200_erri.yaml", "full", "cvode_bdf")
+    ->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK_CAPTURE(run_scene, cooperrider_100_full_cvode, "cooperrider_car_100.yaml", "full", "cvode_bdf")
+    ->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK_CAPTURE(rhs_eval, manchester_200_lateral, "manchester_coach_200_erri.yaml");
+BENCHMARK_CAPTURE(rhs_eval, cooperrider_100_full, "cooperrider_car_100.yaml");
+
+BENCHMARK_MAIN();
