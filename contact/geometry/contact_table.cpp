@@ -17,7 +17,7 @@ namespace railsim::contact {
 
 namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr char kMagic[8] = {'R', 'S', 'C', 'T', 'A', 'B', '0', '1'};
+constexpr char kMagic[8] = {'R', 'S', 'C', 'T', 'A', 'B', '0', '2'};  // bump when the search changes
 
 std::string num(double v) {
   char buf[64];
@@ -105,8 +105,9 @@ unsigned long long ContactTable::cache_key(const WheelRailGeometry& geometry, co
   f.mix(wheel.content_hash());
   f.mix(rail.content_hash());
   const TrackSetup& s = geometry.setup();
+  const SearchOptions& o = geometry.options();
   for (double v : {s.gauge, s.gauge_depth, s.flange_back, s.back_face, s.r0, s.inclination, grid.y_min, grid.y_max,
-                   grid.y_step})
+                   grid.y_step, o.second_gap_max, o.wheel_step, o.rail_step, o.flange_margin})
     f.mix(v);
   return f.h;
 }

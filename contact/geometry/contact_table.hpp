@@ -9,8 +9,8 @@
 // contact point (tread <-> flange, |delta y_wheel| > 1 mm between two rows) the
 // nearest row is taken instead, so jumps are never averaged away.
 // Cache: file contact_table_<16 hex digits>.bin in the cache folder; the key is
-// an FNV-1a hash of both profiles' points, the track set-up, the y grid and the
-// search options. Default folder: $XDG_CACHE_HOME/railsim, else
+// an FNV-1a hash of a format version, both profiles' points, the track set-up,
+// the y grid and the search options. Default folder: $XDG_CACHE_HOME/railsim, else
 // ~/.cache/railsim. A corrupt or mismatching file is rebuilt.
 #pragma once
 

@@ -113,6 +113,7 @@ class WheelRailGeometry {
                          double halfwidth, int n) const;
 
   const TrackSetup& setup() const { return setup_; }
+  const SearchOptions& options() const { return options_; }
   double rail_offset() const { return rail_offset_; }  // rail-profile origin |y| in the track [m]
   double nominal_height() const { return setup_.r0; }  // reference axle height (rail origin at z = 0)
 
