@@ -7,6 +7,7 @@
 #include <initializer_list>
 #include <numbers>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "contact/kalker_coefficients.hpp"
