@@ -9,6 +9,7 @@
 #include "engine/simulation.hpp"
 #include "engine/system.hpp"
 #include "engine_test_support.hpp"
+#include "test_support.hpp"
 
 using namespace railsim;
 
@@ -51,4 +52,34 @@ TEST_CASE("lateral model: wheel loads at rest are half the wheelset weight", "[e
   CHECK(d.wheel[0].Q == Approx(W / 2).epsilon(1e-12));
   CHECK(d.wheel[1].Q == Approx(W / 2).epsilon(1e-12));
   CHECK(xd.norm() == Approx(0.0).margin(1e-12));
+}
+
+TEST_CASE("lateral and full wheelset models agree over the lateral defect", "[engine][wheelset]") {
+  // Same single wheelset and defect; the full model adds vertical, roll and
+  // spin dynamics with elastic contact, which barely change the lateral motion
+  // of conical wheels (gravitational stiffness 2 N lambda / l0 ~ 5 kN/m << 1 MN/m).
+  auto lat = engine::load_scenario(test::source_path("scenarios/single_wheelset.yaml"));
+  auto full = test::scenario_from_text(
+      "vehicle: vehicles/single_wheelset.yaml\n"
+      "track: {segments: [{type: straight, length: 400}], irregularities: [{type: defect, channel: lateral, start: 20, "
+      "wavelength: 20, amplitude_mm: 10}]}\n"
+      "speed: 40\nduration: 4\noutput_interval: 0.005\nwheelset_model: full\n"
+      "contact:\n  geometry: {type: conical, r0: 0.46, conicity: 0.2, l0: 0.75, contact_angle: 0}\n"
+      "  tangential: coefficients\n  creep_coefficients: {f11: 1.0e7, f22: 1.0e7}\n  spin: false\n"
+      "integrator: {method: cvode_bdf, rtol: 1.0e-7, atol: 1.0e-9, max_step: 0.002}\n");
+  std::vector<double> yl, yf;
+  const int ql = lat.model.bodies[0].q_index[engine::kLat];
+  const int qf = full.model.bodies[0].q_index[engine::kLat];
+  engine::simulate(lat.model, lat.integrator, lat.x0, lat.duration, lat.output_interval,
+                   [&](double, const Eigen::VectorXd& x, const engine::Data&) { yl.push_back(x[ql]); });
+  engine::simulate(full.model, full.integrator, full.x0, full.duration, full.output_interval,
+                   [&](double, const Eigen::VectorXd& x, const engine::Data&) { yf.push_back(x[qf]); });
+  REQUIRE(yl.size() == yf.size());
+  double peak = 0, err = 0;
+  for (std::size_t i = 0; i < yl.size(); ++i) {
+    peak = std::max(peak, std::abs(yl[i]));
+    err = std::max(err, std::abs(yl[i] - yf[i]));
+  }
+  INFO("peak " << peak * 1e3 << " mm, max difference " << err / peak * 100 << " % of peak");
+  CHECK(err < 0.03 * peak);
 }
