@@ -18,6 +18,11 @@ int fft_friendly_size(int target) {
   }
 }
 
+std::mutex& fftw_planner_mutex() {
+  static std::mutex m;  // guards FFTW's (global) planner state only
+  return m;
+}
+
 namespace {
 fftw_plan as_plan(void* p) { return static_cast<fftw_plan>(p); }
 fftw_complex* as_fc(std::complex<double>* p) { return reinterpret_cast<fftw_complex*>(p); }
@@ -33,29 +38,50 @@ Convolution::Convolution(int mx, int my, int n_kernels, unsigned fftw_flags)
   rout_ = fftw_alloc_real(nr);
   c1_ = reinterpret_cast<std::complex<double>*>(fftw_alloc_complex(ncx));
   c2_ = reinterpret_cast<std::complex<double>*>(fftw_alloc_complex(ncx));
-  if (!rin_ || !rin2_ || !rout_ || !c1_ || !c2_) throw std::bad_alloc();
-  // Plans first: FFTW_MEASURE overwrites the arrays while planning.
-  plan_fwd_ = fftw_plan_dft_r2c_2d(n0_, n1_, rin_, as_fc(c1_), fftw_flags);
-  plan_inv_ = fftw_plan_dft_c2r_2d(n0_, n1_, as_fc(c1_), rout_, fftw_flags);
+  if (!rin_ || !rin2_ || !rout_ || !c1_ || !c2_) {
+    release();
+    throw std::bad_alloc();
+  }
+  {
+    // Plans first: FFTW_MEASURE overwrites the arrays while planning.
+    std::lock_guard<std::mutex> lock(fftw_planner_mutex());
+    plan_fwd_ = fftw_plan_dft_r2c_2d(n0_, n1_, rin_, as_fc(c1_), fftw_flags);
+    plan_inv_ = fftw_plan_dft_c2r_2d(n0_, n1_, as_fc(c1_), rout_, fftw_flags);
+  }
+  if (!plan_fwd_ || !plan_inv_) {
+    release();
+    throw std::runtime_error("mim convolution: FFTW could not plan the transforms");
+  }
   std::memset(rin_, 0, nr * sizeof(double));
   std::memset(rin2_, 0, nr * sizeof(double));
   kernels_.assign(n_kernels, nullptr);
   for (auto& k : kernels_) {
     k = reinterpret_cast<std::complex<double>*>(fftw_alloc_complex(ncx));
-    if (!k) throw std::bad_alloc();
+    if (!k) {
+      release();
+      throw std::bad_alloc();
+    }
     std::fill(k, k + ncx, std::complex<double>(0.0, 0.0));
   }
 }
 
-Convolution::~Convolution() {
-  for (auto* k : kernels_) fftw_free(k);
-  if (plan_fwd_) fftw_destroy_plan(as_plan(plan_fwd_));
-  if (plan_inv_) fftw_destroy_plan(as_plan(plan_inv_));
+Convolution::~Convolution() { release(); }
+
+void Convolution::release() {
+  for (auto*& k : kernels_) fftw_free(k), k = nullptr;
+  {
+    std::lock_guard<std::mutex> lock(fftw_planner_mutex());
+    if (plan_fwd_) fftw_destroy_plan(as_plan(plan_fwd_));
+    if (plan_inv_) fftw_destroy_plan(as_plan(plan_inv_));
+    plan_fwd_ = plan_inv_ = nullptr;
+  }
   fftw_free(rin_);
   fftw_free(rin2_);
   fftw_free(rout_);
   fftw_free(c1_);
   fftw_free(c2_);
+  rin_ = rin2_ = rout_ = nullptr;
+  c1_ = c2_ = nullptr;
 }
 
 void Convolution::set_kernel(int slot, const std::function<double(int, int)>& k) {

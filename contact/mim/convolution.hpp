@@ -6,12 +6,15 @@
 // with the kernel K given at offsets -(mx-1)..(mx-1) x -(my-1)..(my-1). The
 // fields are zero-padded to an FFT-friendly size >= (2mx - 1) x (2my - 1), so
 // the circular wrap never reaches the grid. Plans and buffers are created once
-// (constructor); apply() allocates nothing. Not thread-safe: one Convolution
-// per thread. Units: whatever the kernel carries.
+// (constructor); apply() allocates nothing. One Convolution per thread; FFTW's
+// planner is not thread-safe, so plan creation and destruction are serialised
+// by fftw_planner_mutex() inside the constructor and destructor (callers need
+// not, and must not, hold it around a solve). Units: whatever the kernel carries.
 #pragma once
 
 #include <complex>
 #include <functional>
+#include <mutex>
 #include <vector>
 
 namespace railsim::contact::mim {
@@ -40,6 +43,7 @@ class Convolution {
                    double* ox, double* oy);
 
  private:
+  void release();
   void load(const double* in, double* padded);
   void store(const double* padded, double* out) const;
 
@@ -55,6 +59,9 @@ class Convolution {
   void* plan_fwd_ = nullptr;
   void* plan_inv_ = nullptr;
 };
+
+// The lock serialising FFTW planner calls of this module.
+std::mutex& fftw_planner_mutex();
 
 // Smallest n >= target whose prime factors are 2, 3, 5, 7.
 int fft_friendly_size(int target);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <thread>
 #include <vector>
 
 #include "contact/hertz.hpp"
@@ -128,4 +129,23 @@ TEST_CASE("third-body layer lowers the initial creep slope", "[mim][third_body]"
   CHECK(cap < 0.25 * m.mu * r.Fz);  // the limiting stress governs
   CHECK(-r.Fx == Approx(cap).epsilon(1e-3));
   CHECK_THROWS_AS(third_body_reduction(p, m, {125e-6, -1.0, 0.0}, N), railsim::InputError);
+}
+
+TEST_CASE("solvers in parallel threads give the serial results", "[mim][model]") {
+  // FFTW planning is serialised inside Convolution; solves run concurrently.
+  const Material m{210e9, 0.28, 0.3};
+  const Creepages c{0.0006, 0.0002, 0.3};
+  std::vector<HertzPatch> patches;
+  for (double B : {0.5, 1.0, 2.0, 4.0}) patches.push_back(hertz_from_load(1.0869565, B, 50000, m));
+  std::vector<double> serial(patches.size()), parallel(patches.size());
+  MimOptions o;
+  o.grid = 16;
+  for (std::size_t k = 0; k < patches.size(); ++k) serial[k] = MimSolver(o).solve_hertz(patches[k], c, m).Fx;
+  std::vector<std::thread> threads;
+  for (std::size_t k = 0; k < patches.size(); ++k)
+    threads.emplace_back([&, k] {
+      for (int rep = 0; rep < 3; ++rep) parallel[k] = MimSolver(o).solve_hertz(patches[k], c, m).Fx;
+    });
+  for (auto& t : threads) t.join();
+  for (std::size_t k = 0; k < patches.size(); ++k) CHECK(parallel[k] == Approx(serial[k]).epsilon(1e-12));
 }
