@@ -55,6 +55,7 @@ void MimSolver::prepare(const ContactGrid& grid, const Material& material) {
   if (!op_ || !op_->matches(grid, pair, layer)) {
     const bool resize = !op_ || op_->grid().size() != grid.size();
     op_ = std::make_unique<InfluenceOperator>(grid, pair, layer, opt_.fftw_flags);
+    have_previous_ = false;
     if (resize) {
       const int n = grid.size();
       nsolver_ = std::make_unique<NormalSolver>(n);
@@ -108,8 +109,11 @@ void MimSolver::tangential(TangentialProblem kind, double w1, double w2, double 
   TangentialOptions to;
   to.tolerance = opt_.tolerance;
   to.max_iterations = opt_.max_iterations;
+  to.warm_start = opt_.warm_start && have_previous_ && previous_kind_ == kind;
   sol_.tangential = tsolver_->solve(*op_, kind, wx_.data(), wy_.data(), bound_.data(), sol_.px.data(),
                                     sol_.py.data(), sol_.state.data(), to);
+  have_previous_ = sol_.tangential.converged;
+  previous_kind_ = kind;
   double Fx = 0.0, Fy = 0.0, Mz = 0.0;
   for (int j = 0; j < g.my; ++j)
     for (int i = 0; i < g.mx; ++i) {
@@ -139,6 +143,7 @@ const MimSolution& MimSolver::solve_normal(const ContactGrid& grid, const std::v
   std::fill(sol_.px.begin(), sol_.px.end(), 0.0);
   std::fill(sol_.py.begin(), sol_.py.end(), 0.0);
   sol_.Fx = sol_.Fy = sol_.Mz = 0.0;
+  have_previous_ = false;
   return sol_;
 }
 

@@ -149,3 +149,25 @@ TEST_CASE("solvers in parallel threads give the serial results", "[mim][model]")
   for (auto& t : threads) t.join();
   for (std::size_t k = 0; k < patches.size(); ++k) CHECK(parallel[k] == Approx(serial[k]).epsilon(1e-12));
 }
+
+TEST_CASE("warm start in a creepage sweep: same forces, fewer iterations", "[mim][model]") {
+  const Material m{210e9, 0.28, 0.3};
+  const HertzPatch p = hertz_from_load(1.0869565, 1.6666667, 75000, m);
+  MimOptions cold, warm;
+  cold.grid = warm.grid = 24;
+  warm.warm_start = true;
+  MimSolver a(cold), b(warm);
+  int it_cold = 0, it_warm = 0;
+  for (int k = 1; k <= 8; ++k) {
+    const Creepages c{0.0002 * k, 0.0, 0.1 * k};
+    const MimSolution& sa = a.solve_hertz(p, c, m);
+    const MimSolution& sb = b.solve_hertz(p, c, m);
+    CHECK(sb.Fx == Approx(sa.Fx).epsilon(1e-5));
+    CHECK(sb.Fy == Approx(sa.Fy).epsilon(1e-5));
+    CHECK(sb.Mz == Approx(sa.Mz).epsilon(1e-5));
+    it_cold += sa.tangential.iterations;
+    it_warm += sb.tangential.iterations;
+  }
+  WARN("tangential iterations over the sweep: cold " << it_cold << ", warm " << it_warm);
+  CHECK(it_warm < it_cold);
+}
