@@ -1,11 +1,13 @@
 // Per-call cost of FASTSIM and the FaStrip-type model (contact/fastsim.cpp,
 // contact/fastrip.cpp) on a typical wheel-rail patch (a = 6 mm, b = 4 mm,
 // Fz = 75 kN, mu = 0.3), in partial slip with creepage and spin.
-// Target (issue 5): FASTSIM on 10 x 10 elements under 5 microseconds per call.
+// Target (issue 5): FASTSIM on 10 x 10 elements under 5 microseconds per call;
+// MIM table lookup (contact/mim_table.cpp) under 1 microsecond per call.
 #include <benchmark/benchmark.h>
 
 #include "contact/fastrip.hpp"
 #include "contact/fastsim.hpp"
+#include "contact/mim_table.hpp"
 
 using namespace railsim::contact;
 
@@ -38,9 +40,29 @@ void run(benchmark::State& state) {
 
 void BM_Fastsim(benchmark::State& s) { run<Fastsim, FastsimOptions>(s); }
 void BM_Fastrip(benchmark::State& s) { run<Fastrip, FastripOptions>(s); }
+
+// Lookup cost does not depend on how accurate the table is, so a small table
+// on a coarse MIM grid (built in well under a second) stands in for the standard one.
+void BM_MimTableLookup(benchmark::State& state) {
+  MimTableSpec spec;
+  spec.aob = {0.45, 0.7, 1.0, 1.4, 2.2};
+  spec.uxi = MimTableSpec::standard().uxi;
+  spec.ueta = MimTableSpec::standard().ueta;
+  spec.vpsi = {-0.9, -0.6, -0.3, 0.0, 0.3, 0.6, 0.9};
+  spec.grid = 6;
+  const MimTableModel model(std::shared_ptr<const MimTable>(MimTable::build(spec, "", {}).release()));
+  ContactInput in = typical_input();
+  double sink = 0.0;
+  for (auto _ : state) {
+    in.creep.xi += 1e-12;
+    sink += model.solve(in, nullptr).Fx;
+    benchmark::DoNotOptimize(sink);
+  }
+}
 }  // namespace
 
 BENCHMARK(BM_Fastsim)->Arg(5)->Arg(10)->Arg(20)->Arg(40)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Fastrip)->Arg(5)->Arg(10)->Arg(20)->Arg(40)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_MimTableLookup)->Unit(benchmark::kMicrosecond);
 
 BENCHMARK_MAIN();
