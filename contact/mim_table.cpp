@@ -149,7 +149,9 @@ std::string read_file(const std::string& path) {
 
 // FFTW's planner is not thread-safe: a MimSolver plans (and frees plans) when
 // its grid changes, i.e. on the first solve for a new a/b, and when destroyed.
-// Those calls are serialised here; plain solves run in parallel.
+// Those calls are serialised here; plain solves run in parallel. (The MIM
+// convolution serialises its own planning too since commit 54f333f; this lock
+// is kept so the table does not depend on that detail.)
 std::mutex& fftw_planner_mutex() {
   static std::mutex m;
   return m;

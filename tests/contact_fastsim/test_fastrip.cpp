@@ -44,7 +44,7 @@ double strip_theory_force(double S) {
 }
 }  // namespace
 
-TEST_CASE("FaStrip keeps the linear-theory slopes exactly, on any grid", "[fastrip]") {
+TEST_CASE("FaStrip keeps the linear-theory slopes exactly on any grid", "[fastrip]") {
   for (const int n : {4, 10, 25}) {
     const Fastrip model({n, n});
     for (const double aob : {0.25, 1.0, 3.0}) {
@@ -103,7 +103,7 @@ TEST_CASE("FaStrip saturates at mu Fz and scales with the reduction factors", "[
   CHECK(model.solve(k).Fy / model.solve(r).Fy == Approx(0.3).epsilon(1e-6));
 }
 
-TEST_CASE("FaStrip signs follow Kalker's convention", "[fastrip]") {
+TEST_CASE("FaStrip signs follow the Kalker convention", "[fastrip]") {
   const Fastrip model;
   ContactInput in = strip_input(6e-3, 5e-3);
   in.creep = {2e-3, 0.0, 0.0};
@@ -121,7 +121,7 @@ TEST_CASE("FaStrip signs follow Kalker's convention", "[fastrip]") {
   CHECK(spin.Mz < 0.0);
 }
 
-TEST_CASE("FaStrip vs FASTSIM against CONTACT's exact creep curves (circular patch)", "[fastrip]") {
+TEST_CASE("FaStrip vs FASTSIM against the CONTACT exact creep curves (circular patch)", "[fastrip]") {
   // Measured (max relative error of the driven force over each family):
   //   FaStrip 10x10: long 1.0 %, lat 1.5 %, spin 31 %; 20x20: 1.0 %, 1.6 %, 12 %
   //   FASTSIM 10x10: long 6.7 %, lat 6.8 %, spin 29 %; 20x20: 5.9 %, 5.9 %, 11.5 %
@@ -150,7 +150,7 @@ TEST_CASE("FaStrip vs FASTSIM against CONTACT's exact creep curves (circular pat
   }
 }
 
-TEST_CASE("FaStrip rejects bad input; registered as 'fastrip'", "[fastrip][input][registry]") {
+TEST_CASE("FaStrip rejects bad input and is registered as fastrip", "[fastrip][input][registry]") {
   const Fastrip model;
   ContactInput in = strip_input(6e-3, 5e-3);
   ContactInput bad = in;

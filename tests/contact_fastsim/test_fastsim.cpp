@@ -37,7 +37,7 @@ Linear linear_theory(const ContactInput& in) {
 }
 }  // namespace
 
-TEST_CASE("FASTSIM reproduces Kalker's linear theory at small creepage (10x10 grid, 1 %)", "[fastsim]") {
+TEST_CASE("FASTSIM reproduces the Kalker linear theory at small creepage (10x10 grid 1 %)", "[fastsim]") {
   // The flexibilities L1, L2, L3 are built so that the no-slip limit is the
   // linear theory; on the default 10 x 10 uniform grid the remaining
   // discretisation error was measured at 0.5 % (xi, eta) and 0.7 % (phi).
@@ -113,7 +113,7 @@ TEST_CASE("FASTSIM reduction factors scale the initial slope", "[fastsim]") {
   CHECK(model.solve(in).Fx == Approx(model.solve(r).Fx).epsilon(1e-12));
 }
 
-TEST_CASE("FASTSIM signs and symmetry follow Kalker's convention", "[fastsim]") {
+TEST_CASE("FASTSIM signs and symmetry follow the Kalker convention", "[fastsim]") {
   const Fastsim model;
   ContactInput in = patch_input(6e-3, 5e-3);
   in.creep = {1e-3, 0.0, 0.0};
@@ -135,7 +135,7 @@ TEST_CASE("FASTSIM signs and symmetry follow Kalker's convention", "[fastsim]") 
   CHECK(spin.stick_fraction < 1.0);
 }
 
-TEST_CASE("FASTSIM error against CONTACT's exact creep curves (circular patch)", "[fastsim]") {
+TEST_CASE("FASTSIM error against the CONTACT exact creep curves (circular patch)", "[fastsim]") {
   // Expected size of FASTSIM's error (Vollebregt et al. 2012; physics-reference 3.4):
   // about 10 % for pure creepage, up to about 25 % with spin. Measured here
   // (max over each family, relative to the exact force at each point):
@@ -189,7 +189,7 @@ TEST_CASE("FASTSIM rejects bad input and handles lost contact", "[fastsim][input
   CHECK_THROWS_AS(Fastsim({1, 10}), railsim::InputError);
 }
 
-TEST_CASE("FASTSIM is registered as 'fastsim' and honours the grid option", "[fastsim][registry]") {
+TEST_CASE("FASTSIM is registered as fastsim and honours the grid option", "[fastsim][registry]") {
   auto m = make_tangential_model("fastsim");
   REQUIRE(m->name() == "fastsim");
   CHECK(dynamic_cast<const Fastsim&>(*m).options().nx == 20);
