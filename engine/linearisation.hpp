@@ -4,7 +4,9 @@
 //   frequency f = |omega| / 2 pi [Hz], damping ratio zeta = -sigma / |s|.
 // The linear critical speed is where the largest real part of the
 // oscillatory modes crosses zero (Hopf point; physics-reference §8.1, §8.4);
-// found by bisection in speed.
+// found by bisection in speed. The linearisation point is x0 at t = 0, i.e.
+// at the scenario's start distance: use a perfect (irregularity-free) track,
+// or the full wheelset model sees its wheels off (or into) the rails there.
 #pragma once
 
 #include <Eigen/Core>

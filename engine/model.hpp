@@ -59,6 +59,10 @@ struct Model {
   std::shared_ptr<const TrackReference> track;
   SpeedProfile speed;
   double max_lateral_shift = 0.0;  // run stops beyond (0: geometry range)
+  // Lateral wheelset model: wheelset roll follows the geometry quasi-statically
+  // (phi = (r_L - r_R) / (a_L + a_R), rigid rails) when true; held at zero when
+  // false (the textbook model of physics-reference §8.1).
+  bool kinematic_roll = true;
   int n_states = 0;
   std::vector<std::string> state_names;
   bool finalized = false;

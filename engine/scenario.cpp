@@ -66,6 +66,7 @@ Scenario load_scenario(const std::string& path) {
 Scenario load_scenario(const InputNode& root, const std::string& base) {
   root.allow_only({"name", "description", "vehicle", "track", "speed", "speed_kmh", "acceleration",
                    "start_distance", "duration", "output_interval", "wheelset_model", "max_lateral_shift",
+                   "wheelset_roll",
                    "contact", "integrator", "initial"});
   Scenario sc;
   sc.name = root.string_or("name", "");
@@ -95,6 +96,11 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
   if (wm == "lateral") m.wheelset_model = WheelsetModel::lateral;
   else if (wm == "full") m.wheelset_model = WheelsetModel::full;
   else root.at("wheelset_model").fail("expected 'lateral' or 'full' (got '" + wm + "')");
+  if (auto wr = root.find("wheelset_roll")) {
+    const std::string v = wr->as_string();
+    if (v != "kinematic" && v != "none") wr->fail("expected 'kinematic' or 'none' (got '" + v + "')");
+    m.kinematic_roll = v == "kinematic";
+  }
   if (root.has("max_lateral_shift")) m.max_lateral_shift = root.in_range("max_lateral_shift", 0.0, 0.2, true);
 
   // Contact.

@@ -162,6 +162,8 @@ bool rhs(const Model& model, Data& d, double t, const double* x, double* xdot) {
     f[kVert] += L.Fz;
     f[kYaw] += L.Mz;
   }
+  if (model.wheelset_model == WheelsetModel::lateral)
+    for (std::size_t w = 0; w < model.wheelsets.size(); ++w) wheelset_lateral_kinematics(model, d, int(w));
   element_forces(model, d, x, xdot);
   for (std::size_t w = 0; w < model.wheelsets.size(); ++w) {
     const bool ok = model.wheelset_model == WheelsetModel::full ? wheelset_full_forces(model, d, int(w), x, xdot)

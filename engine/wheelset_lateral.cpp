@@ -1,12 +1,40 @@
 // Lateral wheelset model; see wheelset_lateral.hpp.
 #include "engine/wheelset_lateral.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 #include "engine/creepages.hpp"
 
 namespace railsim::engine {
+
+namespace {
+double kinematic_roll(const ContactGeometry& geo, double y) {
+  WheelContact l, r;
+  geo.evaluate(y, l);
+  geo.evaluate(-y, r);
+  return (l.rolling_radius - r.rolling_radius) / (l.lateral + r.lateral);
+}
+}  // namespace
+
+void wheelset_lateral_kinematics(const Model& model, Data& d, int w) {
+  if (!model.kinematic_roll) return;
+  const Wheelset& ws = model.wheelsets[w];
+  BodyMotion& m = d.motion[ws.body];
+  const TrackSample& T = d.track[ws.body];
+  const double y = m.q[kLat] - 0.5 * (T.lat_left + T.lat_right);
+  const double ydot = m.v[kLat] - d.V * 0.5 * (T.dlat_left + T.dlat_right);
+  const ContactGeometry& geo = *ws.geometry;
+  const double lim = geo.max_shift();
+  if (!(std::abs(y) < lim)) return;  // wheelset_lateral_forces reports it
+  const double h = 1e-6;
+  const double y0 = std::clamp(y, -lim + h, lim - h);
+  const double phi = kinematic_roll(geo, y0);
+  const double dphi = (kinematic_roll(geo, y0 + h) - kinematic_roll(geo, y0 - h)) / (2 * h);
+  m.q[kRoll] = phi;
+  m.v[kRoll] = dphi * ydot;
+}
 
 bool wheelset_lateral_forces(const Model& model, Data& d, int w) {
   const Wheelset& ws = model.wheelsets[w];
@@ -26,6 +54,8 @@ bool wheelset_lateral_forces(const Model& model, Data& d, int w) {
   k.ydot = m.v[kLat] - d.V * dya;
   k.psi = m.q[kYaw];
   k.psidot = m.v[kYaw];
+  k.phi = m.q[kRoll];      // kinematic roll (0 when switched off)
+  k.phidot = m.v[kRoll];
   const double ymax = model.max_lateral_shift > 0 ? model.max_lateral_shift : geo.max_shift();
   if (!(std::abs(k.y) <= ymax)) {
     char buf[256];
@@ -56,15 +86,17 @@ bool wheelset_lateral_forces(const Model& model, Data& d, int w) {
       d.fail(buf);
       return false;
     }
-    const double cd = std::cos(c[i].contact_angle), sd = std::sin(c[i].contact_angle);
-    const double N = Q[i] / cd;
+    const double cd = std::cos(c[i].contact_angle);
+    const double th = c[i].contact_angle + side * k.phi;
+    const double ct = std::cos(th), st = std::sin(th);
+    const double N = Q[i] / ct;
     const contact::Creepages cr = wheel_creepages(k, c[i], side);
     const contact::ContactForces cf =
         model.coupling.forces(c[i], N, ws.static_load[i], cr, d.V, d.workspace[2 * w + i].get());
-    const double Y = cf.Fy * cd - side * N * sd + cf.Fx * k.psi - side * c[i].flange_force;
+    const double Y = cf.Fy * ct - side * N * st + cf.Fx * k.psi - side * c[i].flange_force;
     const double X = cf.Fx - cf.Fy * k.psi * cd;
     Ysum += Y;
-    Msum += -side * c[i].lateral * (X + Y * k.psi) + cf.Mz * cd;
+    Msum += -side * c[i].lateral * (X + Y * k.psi) + cf.Mz * ct;
     out.Q = Q[i];
     out.N = N;
     out.Y = Y;

@@ -15,9 +15,14 @@
 //   Y  = Fy cos(delta) - side N sin(delta) + Fx psi - side F_flange
 //   X  = Fx - Fy psi cos(delta)
 //   yaw moment  -side a (X + Y psi) + Mz cos(delta)
-// (DYTSI's resolution, cooperrider-car.md §7.6, without roll). The lateral
-// components -side N sin(delta) give the gravitational stiffness when the
-// contact angle varies with y. The spin speed is V/r0 (no spin perturbation).
+// (DYTSI's resolution, cooperrider-car.md §7.6) with theta = delta + side phi
+// in place of delta when the roll is kinematic. Kinematic roll (Model::
+// kinematic_roll): the wheelset rolls with the rolling-radius difference on
+// rigid rails, phi = (r_L - r_R) / (a_L + a_R), phidot = dphi/dy ydot (set
+// before the force elements act, so the suspension sees it; it also enters
+// the lateral creepage through r phidot). The lateral components
+// -side N sin(theta) give the gravitational stiffness (contact angle varying
+// with y, and roll). The spin speed is V/r0 (no spin perturbation).
 // Relative lateral motion: y - y_track, y_track = mean of the rails' lateral
 // irregularities. Stops (Data::fail) on wheel lift-off (Q < 0) and when |y|
 // leaves the geometry's range.
@@ -27,6 +32,10 @@
 #include "engine/model.hpp"
 
 namespace railsim::engine {
+
+// Sets the quasi-static roll (and roll rate) of wheelset w in data.motion
+// from its lateral motion (before the force elements are evaluated).
+void wheelset_lateral_kinematics(const Model& model, Data& data, int w);
 
 // Adds the contact forces of wheelset w to data.force; false on failure.
 bool wheelset_lateral_forces(const Model& model, Data& data, int w);

@@ -15,6 +15,7 @@ engine::Scenario single_wheelset(double V, double f, const std::string& vehicle,
       "track: {segments: [{type: straight, length: 5000}]}\n"
       "speed: " + std::to_string(V) + "\n"
       "duration: 1\n"
+      "wheelset_roll: none\n"
       "contact:\n"
       "  geometry: {type: conical, r0: 0.46, conicity: 0.2, l0: 0.75, contact_angle: 0}\n"
       "  tangential: coefficients\n"

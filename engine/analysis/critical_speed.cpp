@@ -1,0 +1,265 @@
+// Critical speed by eigenvalues, bifurcation sweep and ramping; see critical_speed.hpp.
+#include "engine/analysis/critical_speed.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "core/errors.hpp"
+#include "engine/linearisation.hpp"
+#include "engine/rigid_body.hpp"
+#include "engine/simulation.hpp"
+#include "results/limit_cycle.hpp"
+
+namespace railsim::engine {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// Initial state: every wheelset shifted laterally by `shift` (same sign: the
+// in-phase start that excites the hunting mode of bogie vehicles most directly).
+Eigen::VectorXd disturbed_state(const Scenario& sc, double shift) {
+  Eigen::VectorXd x = sc.x0;
+  for (const auto& w : sc.model.wheelsets) x[sc.model.bodies[w.body].q_index[kLat]] = shift;
+  return x;
+}
+
+Scenario at_speed(const Scenario& sc, double v0, double accel) {
+  Scenario s = sc;
+  s.model.speed.v0 = v0;
+  s.model.speed.accel = accel;
+  return s;
+}
+
+struct PointOutcome {
+  double amplitude = 0.0, frequency = 0.0, growth = 0.0;
+  bool failed = false;
+};
+
+PointOutcome run_point(const Scenario& base, double speed, double shift, const BifurcationOptions& o) {
+  const Scenario sc = at_speed(base, speed, 0.0);
+  const std::size_t nw = sc.model.wheelsets.size();
+  std::vector<double> t;
+  std::vector<std::vector<double>> y(nw);
+  const double dt = std::min(sc.output_interval, 0.005);
+  t.reserve(static_cast<std::size_t>(o.duration / dt) + 2);
+  Observer obs = [&](double ti, const Eigen::VectorXd& x, const Data&) {
+    t.push_back(ti);
+    for (std::size_t w = 0; w < nw; ++w) y[w].push_back(x[sc.model.bodies[sc.model.wheelsets[w].body].q_index[kLat]]);
+  };
+  PointOutcome out;
+  try {
+    simulate(sc.model, sc.integrator, disturbed_state(sc, shift), o.duration, dt, obs);
+  } catch (const NumericalError& e) {
+    // A run that derails or lifts a wheel is hunting violently: it counts as
+    // unstable, with the amplitude it had reached.
+    spdlog::warn("speed {:.1f} km/h: run stopped ({}); counted as hunting", speed * 3.6, e.what());
+    out.failed = true;
+  }
+  for (std::size_t w = 0; w < nw; ++w) {
+    if (t.size() < 8) break;
+    const auto lc = results::settled_amplitude(t, y[w], o.tail_fraction);
+    if (lc.amplitude > out.amplitude) {
+      out.amplitude = lc.amplitude;
+      out.frequency = lc.frequency;
+      out.growth = lc.growth;
+    }
+  }
+  return out;
+}
+
+// Where the hunting limit cycle collapsed during the ramp. The envelope of the
+// lateral motion is sampled at its half-cycle peaks. While the speed is above
+// the critical speed the peaks stay (nearly) constant: the limit cycle only
+// drifts with speed. The collapse is the last unbroken run of peaks that decay
+// faster than `collapse_rate` (logarithmic rate, 1/s) and ends below the
+// threshold; the critical speed is the speed at the start of that run. Using
+// the start of the decay rather than the threshold crossing removes most of the
+// lag of a finite deceleration (True 2013).
+double collapse_speed(const std::vector<double>& t, const std::vector<double>& v, const std::vector<double>& env,
+                      std::size_t first, const RampingOptions& o, bool& hunting_at_end) {
+  std::vector<std::size_t> peaks;
+  for (std::size_t i = std::max<std::size_t>(first, 1); i + 1 < env.size(); ++i)
+    if (env[i] >= env[i - 1] && env[i] > env[i + 1]) peaks.push_back(i);
+  hunting_at_end = false;
+  if (peaks.empty()) return o.v_start;
+  // Last peak above the threshold: the collapse is complete after it.
+  long last = -1;
+  for (long k = static_cast<long>(peaks.size()) - 1; k >= 0; --k)
+    if (env[peaks[static_cast<std::size_t>(k)]] > o.threshold) {
+      last = k;
+      break;
+    }
+  if (last < 0) return o.v_start;
+  if (t.back() - t[peaks[static_cast<std::size_t>(last)]] < 1.0) {
+    hunting_at_end = true;  // still oscillating at the end of the ramp
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+  // Walk back over peaks that decay faster than collapse_rate, measured over
+  // about one second so that the beat between wheelsets does not break the run.
+  auto rate = [&](std::size_t k0, std::size_t k1) {
+    const std::size_t i0 = peaks[k0], i1 = peaks[k1];
+    return std::log(env[i1] / env[i0]) / (t[i1] - t[i0]);
+  };
+  std::size_t k = static_cast<std::size_t>(last);
+  while (k > 0) {
+    std::size_t j = k;
+    while (j > 0 && t[peaks[k]] - t[peaks[j]] < 1.0) --j;
+    if (j == k || rate(j, k) > -o.collapse_rate) break;
+    k = j;
+  }
+  return v[peaks[k]];
+}
+
+}  // namespace
+
+bool is_hunting(const BifurcationPoint& p, const BifurcationOptions& o) {
+  if (p.failed) return true;
+  return p.amplitude > o.threshold && p.growth > -o.decay_tolerance;
+}
+
+Scenario with_contact(const Scenario& scenario, const std::string& tangential_model,
+                      const contact::ReductionFactors* reduction) {
+  Scenario s = scenario;
+  CouplingOptions o = s.model.coupling.options();
+  if (!tangential_model.empty()) o.tangential = tangential_model;
+  if (reduction) o.reduction = *reduction;
+  s.model.coupling = WheelRailCoupling(o);
+  return s;
+}
+
+double linear_critical_speed(const Scenario& scenario, double v_lo, double v_hi) {
+  const double lo = max_real_part(scenario.model, v_lo);
+  const double hi = max_real_part(scenario.model, v_hi);
+  if (lo > 0.0) return v_lo;      // already unstable at the bottom of the range
+  if (hi <= 0.0) return kNaN;     // stable over the whole range
+  return critical_speed(scenario.model, v_lo, v_hi);
+}
+
+BifurcationResult bifurcation_sweep(const Scenario& scenario, const BifurcationOptions& o,
+                                    const std::string& points_csv) {
+  if (!(o.v_min > 0.0 && o.v_max > o.v_min && o.v_step > 0.0))
+    throw InputError("bifurcation sweep: need 0 < v_min < v_max and v_step > 0");
+  std::vector<double> speeds;
+  const long n_speeds = static_cast<long>(std::floor((o.v_max - o.v_min) / o.v_step + 1e-9)) + 1;
+  for (long i = 0; i < n_speeds; ++i) speeds.push_back(o.v_max - static_cast<double>(i) * o.v_step);
+  std::vector<SweepPoint> points;
+  long index = 0;
+  char key[64];
+  for (const char* branch : {"down", "up"}) {
+    if (std::string(branch) == "up" && !o.up_branch) continue;
+    for (double v : speeds) {
+      std::snprintf(key, sizeof key, "%s:%.6g", branch, v);
+      points.push_back({index++, key, {v, std::string(branch) == "down" ? 1.0 : 0.0}});
+    }
+  }
+  SweepOptions so;
+  so.output = points_csv;
+  // Only deterministic values go into the points file, so that thread and MPI
+  // runs of the same sweep write identical files (no wall times here).
+  so.result_columns = {"speed_m_s", "down", "amplitude_m", "frequency_hz", "growth", "failed"};
+  so.threads = o.threads;
+  so.use_mpi = o.use_mpi;
+  so.label = "bifurcation sweep";
+  auto fn = [&](const SweepPoint& p) {
+    const double v = p.params[0];
+    const bool down = p.params[1] > 0.5;
+    const PointOutcome r = run_point(scenario, v, down ? o.large_disturbance : o.small_disturbance, o);
+    return std::vector<double>{v, p.params[1], r.amplitude, r.frequency, r.growth, r.failed ? 1.0 : 0.0};
+  };
+  const auto rows = run_sweep(points, fn, so);
+
+  BifurcationResult res;
+  res.resolution = o.v_step;
+  for (const auto& r : rows) {
+    BifurcationPoint p;
+    p.speed = r.values[0];
+    p.branch = r.values[1] > 0.5 ? "down" : "up";
+    p.amplitude = r.values[2];
+    p.frequency = r.values[3];
+    p.growth = r.values[4];
+    p.failed = r.values[5] > 0.5;
+    res.points.push_back(p);
+  }
+  std::sort(res.points.begin(), res.points.end(), [](const auto& a, const auto& b) {
+    return a.branch != b.branch ? a.branch < b.branch : a.speed < b.speed;
+  });
+  // V_NL: lowest speed of a contiguous hunting range on the down branch that
+  // reaches the top of the sweep.
+  res.nonlinear_critical_speed = kNaN;
+  std::vector<const BifurcationPoint*> down;
+  for (const auto& p : res.points)
+    if (p.branch == "down") down.push_back(&p);
+  for (auto it = down.rbegin(); it != down.rend(); ++it) {
+    if (!is_hunting(**it, o)) break;
+    res.nonlinear_critical_speed = (*it)->speed;
+  }
+  return res;
+}
+
+RampingResult ramping(const Scenario& scenario, const RampingOptions& o) {
+  if (!(o.v_start > o.v_end && o.v_end > 0.0 && o.deceleration > 0.0))
+    throw InputError("ramping: need v_start > v_end > 0 and deceleration > 0");
+  RampingResult res;
+  const auto t0 = std::chrono::steady_clock::now();
+  const Scenario sc = at_speed(scenario, o.v_start, 0.0);
+  const std::size_t nw = sc.model.wheelsets.size();
+
+  // Phase 1: settle at v_start on the attractor reached from the disturbance.
+  // Phase 2: decelerate to v_end. Both are one simulation with a speed profile
+  // V(t) = v_start for t < settle_time, then v_start - a (t - settle_time);
+  // implemented as two runs, the second started from the final state of the first.
+  std::vector<double> t_all, v_all, ymax_all;
+  Eigen::VectorXd x_end;
+  auto record = [&](const Scenario& s, double t_offset) {
+    return Observer([&, t_offset](double ti, const Eigen::VectorXd& x, const Data&) {
+      double m = 0.0;
+      for (std::size_t w = 0; w < nw; ++w) m = std::max(m, std::fabs(x[s.model.bodies[s.model.wheelsets[w].body].q_index[kLat]]));
+      t_all.push_back(t_offset + ti);
+      v_all.push_back(s.model.speed.speed(ti));
+      ymax_all.push_back(m);
+      x_end = x;
+    });
+  };
+  bool stopped = false;
+  try {
+    simulate(sc.model, sc.integrator, disturbed_state(sc, o.disturbance), o.settle_time, o.output_interval,
+             record(sc, 0.0));
+  } catch (const NumericalError& e) {
+    spdlog::warn("ramping: settling run stopped: {}", e.what());
+    stopped = true;
+  }
+  // Hunting at the start: the last second of the settling run still oscillates.
+  double late_peak = 0.0;
+  for (std::size_t i = 0; i < t_all.size(); ++i)
+    if (t_all[i] > o.settle_time - 1.0) late_peak = std::max(late_peak, ymax_all[i]);
+  res.hunting_at_start = stopped || late_peak > o.threshold;
+  if (stopped) throw NumericalError("ramping: the vehicle derailed while settling at the start speed " +
+                                    std::to_string(o.v_start * 3.6) + " km/h; lower v_start");
+  if (!res.hunting_at_start) {
+    res.critical_speed = kNaN;
+    spdlog::warn("ramping: no hunting at {:.1f} km/h (peak {:.2f} mm in the last second): raise the start speed",
+                 o.v_start * 3.6, late_peak * 1e3);
+  } else {
+    Scenario ramp = sc;
+    ramp.model.speed.v0 = o.v_start;
+    ramp.model.speed.accel = -o.deceleration;
+    ramp.model.speed.s0 = sc.model.speed.distance(o.settle_time);
+    const double duration = (o.v_start - o.v_end) / o.deceleration;
+    const std::size_t first_ramp = t_all.size();
+    simulate(ramp.model, ramp.integrator, x_end, duration, o.output_interval, record(ramp, o.settle_time));
+    res.critical_speed = collapse_speed(t_all, v_all, ymax_all, first_ramp, o, res.hunting_at_end);
+  }
+  res.time = std::move(t_all);
+  res.speed = std::move(v_all);
+  res.max_lateral = std::move(ymax_all);
+  res.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return res;
+}
+
+}  // namespace railsim::engine

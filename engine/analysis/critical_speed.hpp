@@ -1,0 +1,105 @@
+// Critical speed of a vehicle: linear (eigenvalues), nonlinear by a
+// bifurcation sweep, and by ramping.
+//
+// Definitions (physics-reference.md section 8.4; True 2013, VSD 51(3);
+// Polach & Kaiser 2012):
+// - linear critical speed V_L: the Hopf point of the centred running
+//   solution, where the largest real part of the oscillatory modes crosses
+//   zero (engine/linearisation.hpp);
+// - nonlinear critical speed V_NL: the lowest speed at which a hunting limit
+//   cycle survives. The bifurcation sweep runs constant speeds, each from a
+//   strongly disturbed state ("down" branch: large initial lateral shift of
+//   every wheelset) and from a weakly disturbed one ("up" branch), and records
+//   the settled amplitude of each wheelset's lateral shift (amplitude after
+//   the transients, results/limit_cycle.hpp). V_NL is the lowest speed of the
+//   down branch with a settled amplitude above the threshold that is not
+//   followed by a decaying speed (the hunting range must be contiguous up to
+//   the top of the sweep).
+// - ramping: start above V_NL on the hunting attractor, decelerate slowly; the
+//   critical speed is the speed where the envelope of the lateral motion starts
+//   its final collapse (decay faster than collapse_rate down to below the
+//   threshold). The ramp must be slow against the decay of the transients
+//   (True 2013), so the result depends on the deceleration: halve it until the
+//   result converges.
+// Speeds in m/s inside; the summary reports km/h as well.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "engine/analysis/sweep_runner.hpp"
+#include "engine/scenario.hpp"
+
+namespace railsim::engine {
+
+struct BifurcationOptions {
+  double v_min = 20.0;               // [m/s]
+  double v_max = 80.0;               // [m/s]
+  double v_step = 5.0;               // [m/s]
+  double duration = 8.0;             // simulated time per point [s]
+  double large_disturbance = 8e-3;   // initial lateral shift, down branch [m]
+  double small_disturbance = 0.5e-3; // initial lateral shift, up branch [m]
+  double threshold = 0.5e-3;         // settled amplitude that counts as hunting [m]
+  double tail_fraction = 0.3;        // part of the record used for the settled amplitude
+  // A point still decaying faster than this (relative change of the half-cycle
+  // peaks over the tail) is a transient, not a limit cycle, whatever its amplitude.
+  double decay_tolerance = 0.05;
+  bool up_branch = true;             // also sweep the weakly disturbed branch
+  int threads = 0;                   // 0: all cores
+  bool use_mpi = false;
+};
+
+struct BifurcationPoint {
+  double speed = 0.0;                // [m/s]
+  std::string branch;                // "down" or "up"
+  double amplitude = 0.0;            // max over wheelsets of the settled amplitude [m]
+  double frequency = 0.0;            // of the wheelset with the largest amplitude [Hz]
+  double growth = 0.0;               // relative amplitude change over the tail
+  bool failed = false;               // run stopped (e.g. derailment) -> treated as hunting
+};
+
+struct BifurcationResult {
+  std::vector<BifurcationPoint> points;  // sorted: branch, then speed
+  double nonlinear_critical_speed = 0.0; // [m/s]; NaN when no hunting was found in the range
+  double resolution = 0.0;               // speed step of the sweep [m/s]
+};
+
+// Hunting: the run derailed, or a settled amplitude above the threshold that is
+// not decaying by more than decay_tolerance over the tail.
+bool is_hunting(const BifurcationPoint& p, const BifurcationOptions& o);
+
+// Run (or resume) the sweep; results are written to `points_csv` as they finish.
+BifurcationResult bifurcation_sweep(const Scenario& scenario, const BifurcationOptions& options,
+                                    const std::string& points_csv);
+
+struct RampingOptions {
+  double v_start = 80.0;             // [m/s]
+  double v_end = 10.0;               // [m/s]
+  double deceleration = 0.5;         // [m/s^2]
+  double disturbance = 8e-3;         // initial lateral shift of every wheelset [m]
+  double threshold = 0.5e-3;         // half-cycle peak that still counts as hunting [m]
+  double collapse_rate = 0.1;        // envelope decay rate that marks the collapse [1/s]
+  double settle_time = 3.0;          // constant speed at v_start before the ramp [s]
+  double output_interval = 0.002;    // sampling of the lateral shifts [s]
+};
+
+struct RampingResult {
+  double critical_speed = 0.0;       // [m/s]; NaN: no hunting at v_start; v_end: still hunting at the end
+  bool hunting_at_start = false;
+  bool hunting_at_end = false;
+  std::vector<double> time, speed, max_lateral;  // envelope record (for charts)
+  double wall_time = 0.0;
+};
+
+RampingResult ramping(const Scenario& scenario, const RampingOptions& options);
+
+// Linear critical speed by bisection of the largest real part over [v_lo, v_hi];
+// NaN when stable over the whole range.
+double linear_critical_speed(const Scenario& scenario, double v_lo, double v_hi);
+
+// Copy of the scenario with another tangential model and/or reduction factors
+// (empty model name: keep; nullptr reduction: keep).
+Scenario with_contact(const Scenario& scenario, const std::string& tangential_model,
+                      const contact::ReductionFactors* reduction);
+
+}  // namespace railsim::engine
