@@ -54,8 +54,11 @@ double max_real_part(const Model& model, double V) {
 }
 
 double critical_speed(const Model& model, double lo, double hi, double rel_tol) {
+  // Undamped modes (e.g. a suspension without dampers) have real parts of the
+  // order of the differencing error (~1e-10 1/s): growth below kZero counts as none.
+  constexpr double kZero = 1e-6;
   double flo = max_real_part(model, lo), fhi = max_real_part(model, hi);
-  if (!(flo < 0 && fhi > 0)) {
+  if (!(flo < kZero && fhi > kZero)) {
     char buf[200];
     std::snprintf(buf, sizeof buf,
                   "critical speed search: no loss of stability between %.4g and %.4g m/s (largest real parts %.4g, "
@@ -64,7 +67,7 @@ double critical_speed(const Model& model, double lo, double hi, double rel_tol) 
   }
   while (hi - lo > rel_tol * hi) {
     const double mid = 0.5 * (lo + hi);
-    (max_real_part(model, mid) < 0 ? lo : hi) = mid;
+    (max_real_part(model, mid) < kZero ? lo : hi) = mid;
   }
   return 0.5 * (lo + hi);
 }

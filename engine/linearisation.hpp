@@ -30,7 +30,8 @@ Eigen::MatrixXd state_jacobian(const Model& model, const Eigen::VectorXd& x0, do
 std::vector<Mode> modes(const Model& model, const Eigen::VectorXd& x0, bool oscillatory_only = true);
 // Largest real part of the oscillatory modes at speed V (x0 = 0).
 double max_real_part(const Model& model, double V);
-// Bisection for the speed where max_real_part changes sign in [v_lo, v_hi];
+// Bisection for the speed where max_real_part exceeds 1e-6 1/s in [v_lo, v_hi]
+// (undamped modes with real parts at rounding level count as stable);
 // throws NumericalError when it does not change sign there.
 double critical_speed(const Model& model, double v_lo, double v_hi, double rel_tol = 1e-5);
 

@@ -67,3 +67,19 @@ TEST_CASE("stiff primary yaw: no hunting (negative Routh-Hurwitz denominator)", 
   const auto sc = test::single_wheelset(30.0, 1e7, "tests/data/engine/single_wheelset_stiff.yaml");
   for (double V : {10.0, 50.0, 100.0}) CHECK(engine::max_real_part(sc.model, V) < 0);
 }
+
+TEST_CASE("Manchester coach: the lateral and full wheelset models give close critical speeds", "[engine][linearisation]") {
+  // Perfect straight track; the two wheelset models differ only by roll and
+  // vertical dynamics, elastic contact, spin perturbation and gyroscopic terms.
+  auto text = [](const char* model) {
+    return std::string("vehicle: vehicles/manchester_coach.yaml\n"
+                       "track: {segments: [{type: straight, length: 3000}]}\n"
+                       "speed: 50\nduration: 1\nwheelset_model: ") + model + "\n"
+                       "contact:\n  geometry: {type: conical, r0: 0.46, conicity: 0.15, l0: 0.75}\n"
+                       "  tangential: coefficients\n  creep_coefficients: {f11: 1.0e7, f22: 1.0e7}\n";
+  };
+  const double v_lat = engine::critical_speed(test::scenario_from_text(text("lateral")).model, 40, 150, 1e-4);
+  const double v_full = engine::critical_speed(test::scenario_from_text(text("full")).model, 40, 150, 1e-4);
+  INFO("lateral " << v_lat << " m/s, full " << v_full << " m/s");
+  CHECK(v_full == Approx(v_lat).epsilon(0.05));
+}
