@@ -49,6 +49,16 @@
 //    slopes for xi, eta, phi (Fy) and the saturated force mu Fz are exact.
 //    Pure creepage without spin is then independent of the grid along x.
 //
+// Accuracy (measured, see tests/contact_fastsim): against CONTACT's exact
+// curves for a circle, pure creepage 1.0-1.6 % (FASTSIM 6-7 %); pure spin as
+// FASTSIM (12 % at 20 x 20). KNOWN WEAKNESS: creepage combined with spin. On
+// nine live-MIM cases (grid 40, a/b 0.5-2, xi/eta 0.5e-3-2e-3, phi 1-3 1/m)
+// the force error reached 23 % (xi 2e-3, eta 1e-3, phi 1.5 1/m: |F| too low)
+// where FASTSIM had 8 %: adding the spin traction on top of the strip solution
+// and returning the sum onto the bound loses force. The coupling of spin and
+// strip theory in Sichani's paper is presumably different; until it is
+// obtained, prefer fastsim (or mim_table) when spin and creepage combine.
+//
 // Units: SI (m, N, Pa, spin 1/m). Signs as contact/types.hpp: forces of the
 // rail on the wheel, positive creepage gives negative force; in the linear
 // limit Fx = -G c^2 C11 xi, Fy = -G c^2 C22 eta - G c^3 C23 phi exactly; the
