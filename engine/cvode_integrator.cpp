@@ -32,6 +32,7 @@ class CvodeIntegrator final : public Integrator {
     if (c_.opt.initial_step > 0) CVodeSetInitStep(mem_, c_.opt.initial_step);
     CVodeSetMinStep(mem_, c_.opt.min_step);
     CVodeSetMaxNumSteps(mem_, c_.opt.max_steps);
+    if (c_.opt.max_order > 0) CVodeSetMaxOrd(mem_, c_.opt.max_order);
     c_.make_linear_solver(x0, t0);
     CVodeSetLinearSolver(mem_, c_.LS, c_.A);
     if (c_.opt.jacobian == "assembled") CVodeSetJacFn(mem_, &SundialsCommon::jac_cb);

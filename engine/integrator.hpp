@@ -33,6 +33,8 @@ struct IntegratorOptions {
   long max_steps = 100000;     // per output interval
   std::string jacobian = "fd";        // cvode/arkode_dirk: fd | assembled
   std::string linear_solver = "dense";  // cvode/arkode_dirk: dense | band
+  int max_order = 0;           // cvode_bdf: highest BDF order (1..5; 0 = 5). 2 keeps BDF A-stable
+                               // for undamped stiff modes (elastic contact without damping)
 };
 
 struct IntegratorStats {

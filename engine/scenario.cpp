@@ -153,7 +153,7 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
   // Integrator.
   if (auto in = root.find("integrator")) {
     in->allow_only({"method", "rtol", "atol", "max_step", "initial_step", "min_step", "max_steps", "jacobian",
-                    "linear_solver"});
+                    "linear_solver", "max_order"});
     auto& o = sc.integrator;
     o.method = in->string_or("method", o.method);
     if (in->has("rtol")) o.rtol = in->in_range("rtol", 0.0, 0.1, true);
@@ -162,6 +162,7 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
     if (in->has("initial_step")) o.initial_step = in->non_negative("initial_step");
     if (in->has("min_step")) o.min_step = in->non_negative("min_step");
     if (in->has("max_steps")) o.max_steps = static_cast<long>(in->in_range("max_steps", 1, 1e9));
+    if (in->has("max_order")) o.max_order = static_cast<int>(in->in_range("max_order", 1, 5));
     o.jacobian = in->string_or("jacobian", o.jacobian);
     o.linear_solver = in->string_or("linear_solver", o.linear_solver);
     bool known = false;
