@@ -34,7 +34,7 @@ class Chopaya final : public TangentialModel {
     // The reduced creepages in force units are exactly the linear forces
     // (f22 eta* = f22 eta + f23 phi), so saturate those.
     const LinearForces lin = linear_forces(f, in.creep);
-    const double tau = std::hypot(lin.Fx, lin.Fy) / (in.material.mu * in.patch.Fz);
+    const double tau = norm2(lin.Fx, lin.Fy) / (in.material.mu * in.patch.Fz);
     // eps = (1 - exp(-tau)) / tau, with expm1 for accuracy near tau = 0.
     const double eps = tau > 0.0 ? -std::expm1(-tau) / tau : 1.0;
     ContactForces out = scaled_forces(lin, eps);

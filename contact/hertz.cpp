@@ -1,6 +1,7 @@
 // Hertz normal contact; see hertz.hpp for the equations and sources.
 #include "contact/hertz.hpp"
 
+#include <boost/math/interpolators/cardinal_cubic_b_spline.hpp>
 #include <boost/math/special_functions/ellint_rd.hpp>
 #include <boost/math/special_functions/ellint_rf.hpp>
 #include <boost/math/tools/roots.hpp>
@@ -11,6 +12,7 @@
 #include <cstdio>
 #include <string>
 #include <tuple>
+#include <vector>
 
 #include "core/errors.hpp"
 
@@ -71,6 +73,92 @@ double log_aspect_start(double rho) {
 
 }  // namespace
 
+namespace {
+
+// h(v) = ln(rho(mc)) - ln(ratio) and dh/dv for the unknown v = ln(a/b) + 1 >= 1,
+// mc = (b/a)^2 = exp(-2 (v - 1)), rho(mc) = mc Dk / Bf (shape equation, Carlson
+// form). h decreases with v (rho falls as a/b grows). Derivatives from
+// K' = Bf/(2 mc), E' = -Dk/2 (d/dm), with series limits for small m to avoid 0/0.
+struct ShapeResidual {
+  double f, df, mc;
+  Associate s;
+};
+ShapeResidual shape_residual(double v, double log_target) {
+  ShapeResidual r;
+  r.mc = std::exp(-2.0 * (v - 1.0));
+  const double m = 1.0 - r.mc;
+  r.s = associate(r.mc);
+  double dDk, dBf;
+  if (m > 1.0e-4) {
+    dDk = (r.s.Bf / (2.0 * r.mc) - r.s.Dk / 2.0) / m;
+    dBf = r.s.Bf / (2.0 * r.mc) - dDk;
+  } else {
+    dDk = 3.0 * kPi / 32.0;
+    dBf = kPi / 32.0;
+  }
+  const double dlnrho_dmc = 1.0 / r.mc - dDk / r.s.Dk + dBf / r.s.Bf;
+  r.f = std::log(r.mc * r.s.Dk / r.s.Bf) - log_target;
+  r.df = -2.0 * r.mc * dlnrho_dmc;  // dmc/dv = -2 mc
+  return r;
+}
+
+// Robust path: Boost's safeguarded Newton-Raphson (bisection fallback) inside the
+// bracket mc <= rho (since Dk >= Bf) and mc >= rho / e^10 (valid for rho >= 1e-10).
+HertzShape shape_iterative(double ratio, double v_start) {
+  // The +1 in v makes Boost's relative step criterion an absolute one on ln(a/b).
+  const double log_target = std::log(ratio);
+  ShapeResidual last{};
+  auto h = [&](double v) {
+    last = shape_residual(v, log_target);
+    return std::make_tuple(last.f, last.df);
+  };
+  const double vmin = 1.0 - 0.5 * log_target;
+  const double vmax = vmin + 5.0;
+  std::uintmax_t max_iter = 60;
+  boost::math::tools::newton_raphson_iterate(h, std::clamp(v_start, vmin, vmax), vmin, vmax, 42, max_iter);
+  if (max_iter >= 60)
+    throw NumericalError("Hertz contact: eccentricity root-find did not converge for curvature ratio " +
+                         num(ratio));
+  // The last evaluated point is within the final Newton step (< 1e-12) of the
+  // root; use it so that g, K and E are mutually consistent.
+  return {std::sqrt(last.mc), last.s.K, last.s.E};
+}
+
+// Start values: g = b/a (minor/major) against L = ln(max/min curvature) on
+// 0 <= L <= ln(1e4), a cubic B-spline (Boost.Math) through 1025 exact solutions
+// computed once (end slopes: g'(0) = -2/3 from the small-eccentricity expansion
+// rho = 1 - 3m/4 + O(m^2), and a central difference at the far end). Its error
+// (< 1e-7 relative) lets a single Newton step reach full precision.
+class ShapeStart {
+ public:
+  static constexpr double kLmax = 9.210340371976184;  // ln(1e4)
+  static constexpr int kNodes = 1025;
+  ShapeStart() {
+    std::vector<double> y(kNodes);
+    const double h = kLmax / (kNodes - 1);
+    for (int i = 0; i < kNodes; ++i) y[i] = i == 0 ? 1.0 : g_exact(i * h);
+    const double d = 1e-4;
+    const double right = (g_exact(kLmax + d) - g_exact(kLmax - d)) / (2.0 * d);
+    spline_ = boost::math::interpolators::cardinal_cubic_b_spline<double>(y.data(), y.size(), 0.0, h, -2.0 / 3.0,
+                                                                          right);
+  }
+  double operator()(double L) const { return spline_(L); }
+
+ private:
+  static double g_exact(double L) {
+    const double rho = std::exp(-L);
+    return shape_iterative(rho, log_aspect_start(rho) + 1.0).g;
+  }
+  boost::math::interpolators::cardinal_cubic_b_spline<double> spline_;
+};
+
+const ShapeStart& shape_start() {
+  static const ShapeStart s;  // immutable after construction
+  return s;
+}
+
+}  // namespace
+
 HertzShape hertz_shape(double ratio) {
   if (!(std::isfinite(ratio) && ratio > 0.0 && ratio <= 1.0))
     throw InputError("Hertz contact: curvature ratio min(A,B)/max(A,B) expected a number in (0, 1] (got " +
@@ -79,47 +167,29 @@ HertzShape hertz_shape(double ratio) {
     throw InputError("Hertz contact: curvature ratio min(A,B)/max(A,B) expected a number in [1e-10, 1] (got " +
                      num(ratio) + "); such a patch is not Hertzian, use a semi-Hertzian model");
   if (ratio >= 1.0 - 1.0e-15) return {1.0, kPi / 2.0, kPi / 2.0};
-
-  // Unknown v = ln(a/b) + 1 >= 1 (the +1 makes Boost's relative step criterion
-  // an absolute one on ln(a/b), i.e. a relative one on a/b).
-  // h(v) = ln(rho(mc)) - ln(ratio), mc = (b/a)^2 = exp(-2 (v - 1)),
-  // rho(mc) = mc Dk / Bf (shape equation, Carlson form). h is increasing in v...
-  // (rho decreases with a/b), derivative from K' = Bf/(2 mc), E' = -Dk/2 (d/dm).
-  const double log_target = std::log(ratio);
-  Associate last{};
-  double last_mc = 1.0;
-  auto h = [&](double v) {
-    const double mc = std::exp(-2.0 * (v - 1.0));
-    const double m = 1.0 - mc;
-    const Associate s = associate(mc);
-    last = s;
-    last_mc = mc;
-    // dDk/dm and dBf/dm; series limits for small m avoid the 0/0 cancellation.
-    double dDk, dBf;
-    if (m > 1.0e-4) {
-      dDk = (s.Bf / (2.0 * mc) - s.Dk / 2.0) / m;
-      dBf = s.Bf / (2.0 * mc) - dDk;
-    } else {
-      dDk = 3.0 * kPi / 32.0;
-      dBf = kPi / 32.0;
-    }
-    const double dlnrho_dmc = 1.0 / mc - dDk / s.Dk + dBf / s.Bf;
-    const double f = std::log(mc * s.Dk / s.Bf) - log_target;
-    const double df = -2.0 * mc * dlnrho_dmc;  // dmc/dv = -2 mc
-    return std::make_tuple(f, df);
-  };
-  // Bracket: mc <= rho (since Dk >= Bf) and mc >= rho / e^10 for rho >= 1e-10.
-  const double vmin = 1.0 - 0.5 * log_target;
-  const double vmax = vmin + 5.0;
-  const double v0 = std::clamp(log_aspect_start(ratio) + 1.0, vmin, vmax);
-  std::uintmax_t max_iter = 60;
-  boost::math::tools::newton_raphson_iterate(h, v0, vmin, vmax, 42, max_iter);
-  if (max_iter >= 60)
-    throw NumericalError("Hertz contact: eccentricity root-find did not converge for curvature ratio " +
-                         num(ratio));
-  // The last evaluated point is within the final Newton step (< 1e-12) of the
-  // root; use it so that g, K and E are mutually consistent.
-  return {std::sqrt(last_mc), last.K, last.E};
+  const double L = -std::log(ratio);
+  if (L > ShapeStart::kLmax) return shape_iterative(ratio, log_aspect_start(ratio) + 1.0);
+  // Fast path: spline start g0, one Newton step on rho(g^2) - ratio, and K, E
+  // carried to the new point by their first derivatives (error O(step^2) ~ 1e-16).
+  const double g0 = shape_start()(L);
+  const double mc0 = g0 * g0;
+  const double m0 = 1.0 - mc0;
+  const Associate s = associate(mc0);
+  double dDk, dBf;  // d/dm, series limits for small m
+  if (m0 > 1.0e-4) {
+    dDk = (s.Bf / (2.0 * mc0) - s.Dk / 2.0) / m0;
+    dBf = s.Bf / (2.0 * mc0) - dDk;
+  } else {
+    dDk = 3.0 * kPi / 32.0;
+    dBf = kPi / 32.0;
+  }
+  const double rho = mc0 * s.Dk / s.Bf;
+  const double drho_dg = 2.0 * g0 * rho * (1.0 / mc0 - dDk / s.Dk + dBf / s.Bf);
+  const double dg = -(rho - ratio) / drho_dg;
+  if (!(std::abs(dg) < 1.0e-6 * g0)) return shape_iterative(ratio, 1.0 - std::log(g0 + dg));
+  const double g = g0 + dg;
+  const double dm = -(2.0 * g0 + dg) * dg;  // m - m0 = mc0 - g^2
+  return {g, s.K + s.Bf / (2.0 * mc0) * dm, s.E - 0.5 * s.Dk * dm};
 }
 
 namespace {

@@ -14,9 +14,12 @@
 //   the MODULUS k = e) and E* = E / (2 (1 - nu^2)) for identical materials.
 //   The shape equation is solved in the cancellation-free Carlson form
 //   A/B = (1-m) R_D / (3 R_F - R_D),  R_F = R_F(0, 1-m, 1), R_D = R_D(0, 1-m, 1)
-//   (Bulirsch / Fukushima associate integrals, as CONTACT's `eli`), by a
-//   safeguarded Newton iteration on ln(b/a)^2 started from the least-squares fit
-//   of physics-reference.md sec. 1.5.
+//   (Bulirsch / Fukushima associate integrals, as CONTACT's `eli`), by Newton's
+//   method on ln(a/b). Fast path (B/A <= 1e4): start from a cubic B-spline of the
+//   exact solution (built once, < 1e-8 error), one Newton step, K and E carried
+//   by their derivatives. Otherwise, or if that step is not small, Boost's
+//   safeguarded Newton-Raphson with bisection fallback inside a guaranteed
+//   bracket, started from the least-squares fit of physics-reference.md sec. 1.5.
 //
 // Units: curvatures 1/m, lengths m, load N, pressure Pa. A and B are the sums of
 // the principal curvatures of both bodies divided by two (gap h = A x^2 + B y^2).

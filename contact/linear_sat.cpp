@@ -26,7 +26,7 @@ class LinearSaturated final : public TangentialModel {
     const LinearCoefficients f = linear_coefficients(in);
     const LinearForces lin = linear_forces(f, in.creep);
     const double bound = in.material.mu * in.patch.Fz;
-    const double F = std::hypot(lin.Fx, lin.Fy);
+    const double F = norm2(lin.Fx, lin.Fy);
     ContactForces out = scaled_forces(lin, F > bound ? bound / F : 1.0);
     if (spin_measure(f, in) > kSpinLimit) {
       out.valid = false;

@@ -44,7 +44,7 @@ class LinearTheory final : public TangentialModel {
   ContactForces solve(const ContactInput& in, TangentialWorkspace*) const override {
     const LinearCoefficients f = linear_coefficients(in);
     ContactForces out = scaled_forces(linear_forces(f, in.creep), 1.0);
-    if (std::hypot(out.Fx, out.Fy) > kLimit * in.material.mu * in.patch.Fz) {
+    if (norm2(out.Fx, out.Fy) > kLimit * in.material.mu * in.patch.Fz) {
       out.valid = false;
       out.reason = "linear theory beyond small creepage (|F| > 0.3 mu Fz)";
     }

@@ -32,7 +32,7 @@ class Polach final : public TangentialModel {
     const double a = in.patch.a, b = in.patch.b;
     const double Fz = in.patch.Fz;
     const double xi = in.creep.xi, eta = in.creep.eta, phi = in.creep.phi;
-    const double s = std::hypot(xi, eta);
+    const double s = norm2(xi, eta);
     const double mu0 = p_.mu0 > 0.0 ? p_.mu0 : in.material.mu;
     const double w = s * std::abs(in.rolling_speed);
     const double mu = mu0 * ((1.0 - p_.A) * std::exp(-p_.B * w) + p_.A);
@@ -40,7 +40,7 @@ class Polach final : public TangentialModel {
 
     ContactForces out;
     // Translational creepage. f11 = G ab k11 C11, so G pi a b C_jj s / 4 = (pi/4) |(f11 xi, f22 eta)|.
-    const double Flin_t = std::hypot(f.f11 * xi, f.f22 * eta);
+    const double Flin_t = norm2(f.f11 * xi, f.f22 * eta);
     if (s > 0.0) {
       const double e = 0.25 * kPi * Flin_t / muN;
       const double F = muN * polach_law(e, p_.kA, p_.kS);
@@ -50,7 +50,7 @@ class Polach final : public TangentialModel {
     // Spin: lateral force.
     if (phi != 0.0) {
       const double syC = eta + phi * a;
-      const double sC = std::abs(syC) <= std::abs(eta) ? s : std::hypot(xi, syC);
+      const double sC = std::abs(syC) <= std::abs(eta) ? s : norm2(xi, syC);
       const double shape = 1.0 + 6.3 * (1.0 - std::exp(-a / b));
       // f23 = G (ab)^{3/2} k23 C23, so G b sqrt(ab) k23 C23 = f23 / a.
       const double eS = (8.0 / 3.0) * (f.f23 / a) * sC / (muN * shape);
@@ -62,7 +62,7 @@ class Polach final : public TangentialModel {
     }
     // Spin moment: linear Mz times the law's saturation ratio for the total linear force.
     const LinearForces lin = linear_forces(f, in.creep);
-    const double Flin = std::hypot(lin.Fx, lin.Fy);
+    const double Flin = norm2(lin.Fx, lin.Fy);
     if (Flin > 0.0) {
       const double e = 0.25 * kPi * Flin / muN;
       out.Mz = lin.Mz * muN * polach_law(e, p_.kA, p_.kS) / Flin;
@@ -73,7 +73,7 @@ class Polach final : public TangentialModel {
     if (ab < kKalkerTableMinAspect || ab > kKalkerTableMaxAspect) {
       out.valid = false;
       out.reason = "a/b outside [0.1, 10], where Polach's spin factor is fitted";
-    } else if (std::hypot(out.Fx, out.Fy) > muN * (1.0 + 1e-9)) {
+    } else if (norm2(out.Fx, out.Fy) > muN * (1.0 + 1e-9)) {
       out.valid = false;
       out.reason = "spin and creep forces superposed above mu Fz";
     }

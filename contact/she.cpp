@@ -30,7 +30,7 @@ class ShenHedrickElkins final : public TangentialModel {
     const LinearCoefficients f = linear_coefficients(in);
     const LinearForces lin = linear_forces(f, in.creep);
     const double bound = in.material.mu * in.patch.Fz;
-    const double beta = std::hypot(lin.Fx, lin.Fy) / bound;
+    const double beta = norm2(lin.Fx, lin.Fy) / bound;
     double eps = 1.0;  // F_R / |F_lin|, limit 1 at beta -> 0
     if (beta > 3.0)
       eps = 1.0 / beta;

@@ -31,7 +31,7 @@ class VermeulenJohnson final : public TangentialModel {
     no_spin.phi = 0.0;
     LinearForces lin = linear_forces(f, no_spin);
     const double bound = in.material.mu * in.patch.Fz;
-    const double tau = std::hypot(lin.Fx, lin.Fy) / (3.0 * bound);
+    const double tau = norm2(lin.Fx, lin.Fy) / (3.0 * bound);
     // eps = F_R / |F_lin| = [1 - (1 - tau)^3] / (3 tau), limit 1 at tau -> 0.
     double eps = 1.0;
     if (tau >= 1.0)

@@ -57,6 +57,25 @@ TEST_CASE("elliptic integrals: parameter m = e^2 vs Boost's modulus k = e", "[he
   }
 }
 
+TEST_CASE("shape equation holds across the fast and the iterative paths", "[hertz]") {
+  // B/A <= 1e4 takes the spline-start path, beyond it the safeguarded iteration;
+  // both must satisfy A/B = (K - E) / (E/(1-e^2) - K) and join continuously.
+  double last_g = 1.0;
+  for (int i = 1; i <= 400; ++i) {
+    const double ratio = std::pow(10.0, -9.5 * i / 400.0);
+    const HertzShape s = hertz_shape(ratio);
+    INFO("ratio " << ratio);
+    const double mc = s.g * s.g;
+    CHECK(rel((s.K - s.E) * mc / (s.E - mc * s.K), ratio) < 1e-10);
+    CHECK(s.g < last_g);
+    last_g = s.g;
+  }
+  const HertzShape in = hertz_shape(1e-4 * (1 + 1e-12)), out = hertz_shape(1e-4 * (1 - 1e-12));
+  CHECK(rel(in.g, out.g) < 1e-11);
+  CHECK(rel(in.K, out.K) < 1e-11);
+  CHECK(rel(in.E, out.E) < 1e-11);
+}
+
 TEST_CASE("classical m n r table (physics-reference 1.3) to printed precision", "[hertz]") {
   const auto t = railsim::results::read_csv(railsim::test::data_path("hertz_mnr_table.csv"));
   REQUIRE(t.rows.size() == 20);
