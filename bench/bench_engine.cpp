@@ -22,7 +22,8 @@ std::string scenario_path(const char* file) {
   return (std::filesystem::path(__FILE__).parent_path().parent_path() / "scenarios" / file).string();
 }
 
-void run_scene(benchmark::State& state, const char* file, const char* wheelset_model, const char* method) {
+void run_scene(benchmark::State& state, const char* file, const char* wheelset_model, const char* method,
+               double rtol = 0.0, double atol = 0.0) {
   using namespace railsim::engine;
   const auto path = scenario_path(file);
   // Build the scene once; the wheelset model and integrator are overridden here.
@@ -36,6 +37,8 @@ void run_scene(benchmark::State& state, const char* file, const char* wheelset_m
   }
   IntegratorOptions o = sc.integrator;
   o.method = method;
+  if (rtol > 0) o.rtol = rtol;  // tolerance override (0: the scenario's)
+  if (atol > 0) o.atol = atol;
   double rtf = 0, rtf_cpu = 0, steps = 0, calls = 0;
   for (auto _ : state) {
     const RunSummary r = simulate(sc.model, o, sc.x0, sc.duration, sc.output_interval);
@@ -75,6 +78,9 @@ BENCHMARK_CAPTURE(run_scene, manchester_200_lateral_cvode, "manchester_coach_200
 BENCHMARK_CAPTURE(run_scene, manchester_200_full_cvode, "manchester_coach_200_erri.yaml", "full", "cvode_bdf")
     ->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK_CAPTURE(run_scene, cooperrider_100_full_cvode, "cooperrider_car_100.yaml", "full", "cvode_bdf")
+    ->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK_CAPTURE(run_scene, cooperrider_100_full_cvode_rtol1e-4, "cooperrider_car_100.yaml", "full", "cvode_bdf",
+                  1e-4, 1e-6)
     ->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK_CAPTURE(rhs_eval, manchester_200_lateral, "manchester_coach_200_erri.yaml");
 BENCHMARK_CAPTURE(rhs_eval, cooperrider_100_full, "cooperrider_car_100.yaml");
