@@ -86,14 +86,15 @@ SemiHertzResult semi_hertz_from_load(const GapProfile& gap, double Fn, const Mat
   const double A0 = gap.A[k0];
   if (!(A0 > 0.0)) throw InputError("semi_hertz: longitudinal curvature A must be positive at the contact point");
   auto hrel = [&](std::size_t j) { return std::isfinite(gap.h[j]) ? gap.h[j] - hmin : 1e30; };
-  // Equivalent lateral curvature over the part around q0 where h - hmin < limit.
-  auto fit_B = [&](double limit) {
+  // Equivalent lateral curvature around index kc: least squares over the
+  // neighbourhood where h - h(kc) < limit.
+  auto fit_B = [&](std::size_t kc, double limit) {
     double num = 0.0, den = 0.0;
     for (int dir : {-1, 1}) {
-      for (std::size_t j = k0;; j = static_cast<std::size_t>(static_cast<long>(j) + dir)) {
-        const double hr = hrel(j);
+      for (std::size_t j = kc;; j = static_cast<std::size_t>(static_cast<long>(j) + dir)) {
+        const double hr = hrel(j) - hrel(kc);
         if (hr >= limit) break;
-        const double d2 = (gap.q[j] - gap.q[k0]) * (gap.q[j] - gap.q[k0]);
+        const double d2 = (gap.q[j] - gap.q[kc]) * (gap.q[j] - gap.q[kc]);
         num += hr * d2;
         den += d2 * d2;
         if ((dir < 0 && j == 0) || (dir > 0 && j + 1 == n)) break;
@@ -102,42 +103,91 @@ SemiHertzResult semi_hertz_from_load(const GapProfile& gap, double Fn, const Mat
     return den > 0.0 ? num / den : 0.0;
   };
   const double Bmin = 1e-3 * A0;
-  double Be = std::max(fit_B(4.0 * dq * dq * A0 + 1e-12), Bmin);
+  double Be = std::max(fit_B(k0, 4.0 * dq * dq * A0 + 1e-12), Bmin);
   double delta = hertz_from_load(A0, Be, Fn, material).approach;
   const double Estar = material.combined_modulus();
 
   SemiHertzResult r;
-  double P = 0.0, I1 = 0.0, eps = 0.0, cA = 0.0;
-  for (int it = 1; it <= 60; ++it) {
-    Be = std::max(fit_B(delta), Bmin);
-    const HertzPatch h1 = hertz_from_load(A0, Be, 1.0, material);
-    eps = Be * h1.b * h1.b / h1.approach;
-    cA = Be * h1.b * h1.b / (A0 * h1.a * h1.a);
+  double P = 0.0, I1 = 0.0, eps = 0.0;
+  // N(delta) for a trial approach: fills the strips, sets eps, P, I1.
+  auto evaluate = [&](double dl) {
+    delta = dl;
+    Be = std::max(fit_B(k0, delta), Bmin);
+    {
+      const HertzPatch h1 = hertz_from_load(A0, Be, 1.0, material);
+      eps = Be * h1.b * h1.b / h1.approach;
+    }
     const double dv = eps * delta;
     I1 = 0.0;
     double I2 = 0.0;
-    for (std::size_t j = 0; j < n; ++j) {
-      const double g = dv - hrel(j);
-      if (g <= 0.0 || !(gap.A[j] > 0.0)) {
-        im.g[j] = im.xl[j] = im.f[j] = 0.0;
+    std::fill(im.g.begin(), im.g.end(), 0.0);
+    std::fill(im.xl.begin(), im.xl.end(), 0.0);
+    std::fill(im.f.begin(), im.f.end(), 0.0);
+    for (std::size_t j0 = 0; j0 < n;) {
+      if (!(hrel(j0) < delta)) {
+        ++j0;
         continue;
       }
-      im.g[j] = g;
-      im.xl[j] = std::sqrt(g / (cA * gap.A[j]));
-      im.f[j] = std::sqrt(g / dv);
-      I1 += im.f[j] * 0.5 * kPi * im.xl[j] * dq;
-      const double d = gap.q[j] - gap.q[k0];
-      I2 += im.f[j] * kernel(im.xl[j], d - 0.5 * dq, d + 0.5 * dq);
+      std::size_t j1 = j0, kz = j0;
+      while (j1 < n && hrel(j1) < delta) {
+        if (hrel(j1) < hrel(kz)) kz = j1;
+        ++j1;
+      }
+      const double hz = hrel(kz);
+      const double Az = gap.A[kz];
+      if (Az > 0.0) {
+        const double Bz = std::max(fit_B(kz, delta - hz), 1e-3 * Az);
+        const HertzPatch hz1 = hertz_from_load(Az, Bz, 1.0, material);
+        const double epsz = Bz * hz1.b * hz1.b / hz1.approach;
+        const double cAz = Bz * hz1.b * hz1.b / (Az * hz1.a * hz1.a);
+        const double dvz = epsz * (delta - hz);
+        for (std::size_t j = j0; j < j1; ++j) {
+          const double g = dvz - (hrel(j) - hz);
+          if (g <= 0.0 || !(gap.A[j] > 0.0)) continue;
+          im.g[j] = g;
+          im.xl[j] = std::sqrt(g / (cAz * gap.A[j]));
+          im.f[j] = std::sqrt(g / dv);
+          I1 += im.f[j] * 0.5 * kPi * im.xl[j] * dq;
+          const double d = gap.q[j] - gap.q[k0];
+          I2 += im.f[j] * kernel(im.xl[j], d - 0.5 * dq, d + 0.5 * dq);
+        }
+      }
+      j0 = j1;
     }
     if (!(I1 > 0.0 && I2 > 0.0))
       throw NumericalError("semi_hertz: empty contact patch (check the gap profile around the contact point)");
     P = kPi * Estar * delta / I2;
-    const double N = P * I1;
+    return P * I1;
+  };
+  // Fixed point delta <- delta (Fn/N)^(2/3) (N ~ delta^1.5); when zones appear
+  // or vanish N(delta) can jump, then fall back to bisection on a bracket.
+  bool done = false;
+  double lo = 0.0, hi = 0.0;
+  for (int it = 1; it <= 30 && !done; ++it) {
+    const double N = evaluate(delta);
     r.iterations = it;
     const double ratio = Fn / N;
-    if (std::abs(ratio - 1.0) < 1e-9) break;
-    delta *= std::pow(ratio, 2.0 / 3.0);
-    if (it == 60) throw NumericalError("semi_hertz: load iteration did not converge in 60 steps");
+    if (std::abs(ratio - 1.0) < 1e-9) done = true;
+    else if (ratio > 1.0) lo = delta;
+    else hi = delta;
+    if (!done) delta *= std::pow(ratio, 2.0 / 3.0);
+  }
+  if (!done) {
+    if (lo == 0.0) lo = delta;
+    if (hi == 0.0) hi = delta;
+    for (int k = 0; k < 60 && evaluate(lo) > Fn; ++k) lo *= 0.5;
+    for (int k = 0; k < 60 && evaluate(hi) < Fn; ++k) hi *= 2.0;
+    for (int it = 0; it < 200; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      const double N = evaluate(mid);
+      ++r.iterations;
+      if (std::abs(N / Fn - 1.0) < 1e-9) break;
+      (N < Fn ? lo : hi) = mid;
+      if (hi - lo < 1e-12 * hi) {
+        P *= Fn / N;  // N(delta) jumps here: keep the load, accept the nearest approach
+        break;
+      }
+    }
   }
   r.Fn = Fn;
   r.approach = delta;

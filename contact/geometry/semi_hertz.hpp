@@ -18,7 +18,10 @@
 // 3. Strip q: interpenetration g(q) = delta_v - (h(q) - h(q0)) > 0, half-length
 //    x_L(q) = sqrt(g / A'(q)), semi-elliptic pressure
 //    p(x,q) = P sqrt(g(q)/delta_v) sqrt(1 - x^2/x_L^2) (Hertz: P = p0).
-//    Several runs of g > 0 give a multi-part patch.
+//    Several zones (runs where the real interpenetration delta - h is
+//    positive) each get the correction of 1.-2. from their own minimum h_z,
+//    with delta_v,z = eps_z (delta - h_z): a multi-part patch. P and the
+//    elastic condition (4.) belong to the main reference point.
 // 4. Load-approach: the elastic approach at the reference point equals delta
 //    (Boussinesq, two identical half-spaces: delta = 1/(pi E*) int p / rho dA,
 //    as in Kik & Piotrowski 2008), so N = pi E* delta I1 / I2 with

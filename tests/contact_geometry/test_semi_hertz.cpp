@@ -39,8 +39,10 @@ TEST_CASE("Semi-Hertz equals Hertz for constant curvatures", "[geometry][semi_he
   }
 }
 
-TEST_CASE("Semi-Hertz on a non-Hertzian S1002/UIC60 position agrees with CONTACT", "[geometry][semi_hertz][mbench]") {
-  // y_ws = 0 (centred wheelset): near two-point tread contact, CONTACT's patch 15.8 mm wide.
+TEST_CASE("Semi-Hertz on non-Hertzian S1002/UIC60 positions agrees with CONTACT", "[geometry][semi_hertz][mbench]") {
+  // y_ws = 0 (centred wheelset): near two-point tread contact, CONTACT's patch
+  // 15.8 mm wide. Right wheel at y_ws = 5 mm: flange root plus tread, a
+  // two-part patch 11.8 mm wide in CONTACT.
   const Profile w = read_profile("S1002", ProfileKind::wheel);
   const Profile r = read_profile("UIC60", ProfileKind::rail);
   TrackSetup ts;
@@ -48,22 +50,31 @@ TEST_CASE("Semi-Hertz on a non-Hertzian S1002/UIC60 position agrees with CONTACT
   const WheelRailGeometry g(w, r, ts);
   const Material m = Material::from_shear_modulus(82000e6, 0.28, 0.3);  // CONTACT's case (d)
   SemiHertzWorkspace ws;
+  int n = 0;
   for (const auto& row : test::read_mbench()) {
-    if (row.series != "yaw0" || row.side != "left" || row.y_ws != 0.0) continue;
-    const auto c = g.at_roll(0.0, 0.0, row.roll);
-    const auto& p = c.wheel[0].p[0];
-    const auto gp = g.gap_profile(Side::left, p, 0.0, c.z[0], row.roll, 0.0, 0.014, 561);
+    if (row.series != "yaw0") continue;
+    const bool centred = row.side == "left" && row.y_ws == 0.0;
+    const bool two_part = row.side == "right" && std::abs(row.y_ws - 0.005) < 1e-9;
+    if (!centred && !two_part) continue;
+    const Side side = row.side == "left" ? Side::left : Side::right;
+    const auto c = g.at_roll(-row.y_ws, 0.0, row.roll);
+    const auto& p = c.wheel[static_cast<std::size_t>(side)].p[0];
+    const auto gp = g.gap_profile(side, p, -row.y_ws, c.z[static_cast<std::size_t>(side)], row.roll, 0.0, 0.014, 561);
     const auto s = semi_hertz_from_load(gp, row.FN, m, ws);
     const auto h = hertz_from_load(p.A, p.B, row.FN, m);
-    WARN("semi-Hertz area " << s.area * 1e6 << " mm2 (CONTACT " << row.area * 1e6 << ", Hertz "
-                            << M_PI * h.a * h.b * 1e6 << "), pmax " << s.p_max / 1e6 << " MPa (CONTACT "
-                            << row.pmax / 1e6 << ", Hertz " << h.p0 / 1e6 << "), width " << s.width * 1e3
-                            << " mm (CONTACT " << row.width * 1e3 << ")");
+    WARN(row.side << " y_ws = " << row.y_ws * 1e3 << " mm: semi-Hertz area " << s.area * 1e6 << " mm2 (CONTACT "
+                  << row.area * 1e6 << ", Hertz " << M_PI * h.a * h.b * 1e6 << "), pmax " << s.p_max / 1e6
+                  << " MPa (CONTACT " << row.pmax / 1e6 << ", Hertz " << h.p0 / 1e6 << "), width " << s.width * 1e3
+                  << " mm (CONTACT " << row.width * 1e3 << "), parts " << s.parts);
     CHECK(s.area == Approx(row.area).epsilon(0.10));
     CHECK(s.p_max == Approx(row.pmax).epsilon(0.05));
+    CHECK(s.width == Approx(row.width).epsilon(0.10));
+    CHECK(s.parts == (two_part ? 2 : 1));
     // Hertz from the local curvatures misses the wide patch by far more.
-    CHECK(std::abs(M_PI * h.a * h.b - row.area) > 0.15 * row.area);
+    CHECK(std::abs(2.0 * h.b - row.width) > 0.3 * row.width);
+    ++n;
   }
+  CHECK(n == 2);
 }
 
 TEST_CASE("Hertz semi-axes at single-patch Hertzian positions match CONTACT", "[geometry][semi_hertz][mbench]") {
