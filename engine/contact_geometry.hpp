@@ -31,7 +31,15 @@ class ContactGeometry {
  public:
   virtual ~ContactGeometry() = default;
   // Contact quantities for a shift s toward this wheel [m]; no allocation.
+  // This is the first (main) contact point.
   virtual void evaluate(double s, WheelContact& out) const = 0;
+  // Several contact points per wheel (e.g. tread and flange): their number and
+  // point k (0 <= k < points()). Only the full wheelset model uses k > 0.
+  virtual int points() const { return 1; }
+  virtual void evaluate_point(double s, int k, WheelContact& out) const {
+    (void)k;
+    evaluate(s, out);
+  }
   // Nominal rolling radius at zero shift [m] (sets the nominal spin speed V/r0).
   virtual double r0() const = 0;
   // Half distance between nominal contact points at zero shift [m].

@@ -5,7 +5,9 @@
 // on a uniform grid of shift toward the wheel [m]. Each column is
 // interpolated with a cubic B-spline on the uniform grid (Boost.Math
 // cardinal_cubic_b_spline; DYTSI uses a natural cubic spline: the two agree
-// away from the table ends). Rows are read from the first table block only.
+// away from the table ends). Several blocks, each starting with a "#" line,
+// are several contact points per wheel (cooperrider-car.md §7.1); the static
+// quantities r0, l0 are those of the first block at zero shift.
 #pragma once
 
 #include <boost/math/interpolators/cardinal_cubic_b_spline.hpp>
@@ -20,7 +22,9 @@ class GeometryTable final : public ContactGeometry {
  public:
   // Throws InputError naming file and line for malformed files.
   explicit GeometryTable(const std::string& path);
-  void evaluate(double s, WheelContact& out) const override;
+  void evaluate(double s, WheelContact& out) const override { evaluate_point(s, 0, out); }
+  int points() const override { return static_cast<int>(blocks_.size()); }
+  void evaluate_point(double s, int k, WheelContact& out) const override;
   double r0() const override { return r0_; }
   double l0() const override { return l0_; }
   double max_shift() const override { return s_max_; }
@@ -30,8 +34,12 @@ class GeometryTable final : public ContactGeometry {
  private:
   using Spline = boost::math::interpolators::cardinal_cubic_b_spline<double>;
   std::string path_;
-  std::vector<Spline> col_;  // columns 1..11
-  std::size_t rows_ = 0;
+  struct Block {
+    std::vector<Spline> col;  // columns 1..11
+    double s_min = 0.0, s_max = 0.0;
+  };
+  std::vector<Block> blocks_;
+  std::size_t rows_ = 0;  // rows of the first block
   double s_min_ = 0.0, s_max_ = 0.0, r0_ = 0.0, l0_ = 0.0;
 };
 

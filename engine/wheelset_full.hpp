@@ -16,8 +16,8 @@
 // Gyroscopic moments of the spinning axle in a non-spinning frame:
 //   Ixx phi'' += Iyy Omega psi',  Izz psi'' -= Iyy Omega phi'
 // (Resal frame; DYTSI uses the body-frame Euler form with (Iy - Iz), §7.7).
-// One contact point per wheel per geometry block (several-point tables: the
-// first block only, geometry_table.hpp).
+// Several contact points per wheel (one per table block, geometry_table.hpp):
+// each point has its own approach, normal load and creep forces, all summed.
 #pragma once
 
 #include "engine/data.hpp"

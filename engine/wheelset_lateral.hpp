@@ -25,7 +25,8 @@
 // with y, and roll). The spin speed is V/r0 (no spin perturbation).
 // Relative lateral motion: y - y_track, y_track = mean of the rails' lateral
 // irregularities. Stops (Data::fail) on wheel lift-off (Q < 0) and when |y|
-// leaves the geometry's range.
+// leaves the geometry's range. Uses the first (main) contact point of the
+// geometry only; multi-point tables need the full model.
 #pragma once
 
 #include "engine/data.hpp"
