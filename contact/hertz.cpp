@@ -214,17 +214,34 @@ HertzPatch assemble(double A, double B, double Fz, double a_major, double b_mino
 
 }  // namespace
 
-HertzPatch hertz_from_load(double A, double B, double Fz, const Material& m) {
-  require_positive(A, "curvature A", "1/m");
-  require_positive(B, "curvature B", "1/m");
-  require_positive(Fz, "normal load Fz", "N");
-  require_material(m);
-  const HertzShape s = hertz_shape(std::min(A, B) / std::max(A, B));
+namespace {
+
+HertzPatch patch_from_shape(double A, double B, const HertzShape& s, double Fz, const Material& m) {
   const double S = A + B;
   const double mc = s.g * s.g;
   const double a_major = std::cbrt(3.0 * Fz * s.E / (2.0 * kPi * m.combined_modulus() * S * mc));
   const double b_minor = a_major * s.g;
   return assemble(A, B, Fz, a_major, b_minor, S * b_minor * b_minor * s.K / s.E);
+}
+
+}  // namespace
+
+HertzPatch hertz_from_load(double A, double B, double Fz, const Material& m) {
+  require_positive(A, "curvature A", "1/m");
+  require_positive(B, "curvature B", "1/m");
+  require_positive(Fz, "normal load Fz", "N");
+  require_material(m);
+  return patch_from_shape(A, B, hertz_shape(std::min(A, B) / std::max(A, B)), Fz, m);
+}
+
+HertzPatch hertz_from_shape(double A, double B, const HertzShape& shape, double Fz, const Material& m) {
+  require_positive(A, "curvature A", "1/m");
+  require_positive(B, "curvature B", "1/m");
+  require_positive(Fz, "normal load Fz", "N");
+  require_material(m);
+  if (!(shape.g > 0.0 && shape.g <= 1.0 && shape.K > 0.0 && shape.E > 0.0))
+    throw InputError("Hertz contact: shape expected g in (0, 1] and K, E > 0 (from hertz_shape)");
+  return patch_from_shape(A, B, shape, Fz, m);
 }
 
 HertzPatch hertz_from_approach(double A, double B, double approach, const Material& m) {

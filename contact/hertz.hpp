@@ -65,4 +65,10 @@ struct HertzShape {
 // ratio = min(A,B)/max(A,B) in (0, 1].
 HertzShape hertz_shape(double ratio);
 
+// The load-dependent part alone, for a shape computed once with
+// hertz_shape(min(A,B)/max(A,B)): the shape depends on the curvature ratio only,
+// so wheel-rail geometry tables can store it and each time step costs a cube root.
+// Same result as hertz_from_load(A, B, Fz, m).
+HertzPatch hertz_from_shape(double A, double B, const HertzShape& shape, double Fz, const Material& m);
+
 }  // namespace railsim::contact

@@ -70,10 +70,15 @@ class KalkerTable {
   double x_min() const { return x_[0]; }
   double x_max() const { return x_[kNodes - 1]; }
 
-  // The 12 series at x (x_min <= x <= x_max): cubic Hermite on the interval.
-  void evaluate(double x, double out[kSeries]) const {
-    int i = static_cast<int>(std::upper_bound(x_.begin(), x_.end(), x) - x_.begin()) - 1;
+  // The 12 series at x = ln(a/b) (x_min <= x <= x_max): cubic Hermite on the
+  // interval. The interval comes straight from the table's 0.1 steps in a/b
+  // (a < b) or b/a (a > b), corrected by one where rounding puts it off.
+  void evaluate(double a_over_b, double x, double out[kSeries]) const {
+    int i = a_over_b <= 1.0 ? static_cast<int>(a_over_b * 10.0) - 1
+                            : 9 + static_cast<int>((1.0 - 1.0 / a_over_b) * 10.0);
     i = std::clamp(i, 0, kNodes - 2);
+    if (x < x_[i] && i > 0) --i;
+    if (x > x_[i + 1] && i < kNodes - 2) ++i;
     const double h = x_[i + 1] - x_[i];
     const double t = (x - x_[i]) / h;
     const double t2 = t * t, t3 = t2 * t;
@@ -107,7 +112,8 @@ double in_nu(const double c[3], double nu) {
   const double w0 = 8.0 * (nu - 0.25) * (nu - 0.5);
   const double w1 = -16.0 * nu * (nu - 0.5);
   const double w2 = 8.0 * nu * (nu - 0.25);
-  return 1.0 / (w0 / c[0] + w1 / c[1] + w2 / c[2]);
+  // 1 / (w0/c0 + w1/c1 + w2/c2) with a single division.
+  return c[0] * c[1] * c[2] / (w0 * c[1] * c[2] + w1 * c[0] * c[2] + w2 * c[0] * c[1]);
 }
 
 KalkerCoefficients combine(const double v[kSeries], double nu) {
@@ -156,7 +162,7 @@ KalkerCoefficients kalker_coefficients(double a_over_b, double nu) {
   const double x = std::log(a_over_b);
   double v[kSeries];
   if (x >= t.x_min() && x <= t.x_max()) {
-    t.evaluate(x, v);
+    t.evaluate(a_over_b, x, v);
     return combine(v, nu);
   }
   if (x < t.x_min()) {  // a << b

@@ -141,6 +141,10 @@ TEST_CASE("approach round trip and semi-axes inverse", "[hertz]") {
       const auto p = hertz_from_load(A, B, 75e3, steel);
       INFO("ratio " << ratio << " swap " << swap);
       CHECK(rel(hertz_from_approach(A, B, p.approach, steel).Fz, 75e3) < 1e-10);
+      const auto c = hertz_from_shape(A, B, hertz_shape(std::min(A, B) / std::max(A, B)), 75e3, steel);
+      CHECK(c.a == p.a);
+      CHECK(c.b == p.b);
+      CHECK(c.approach == p.approach);
       CHECK(((p.a >= p.b) == (A <= B)));
       const auto q = hertz_from_semi_axes(p.a, p.b, 75e3, steel);
       CHECK(rel(q.A, A) < 1e-9);
