@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <string>
 
 #include "engine/simulation.hpp"
 #include "engine/system.hpp"
@@ -42,15 +43,20 @@ TEST_CASE("Manchester coach: wheel loads at rest equal the static weight share",
 }
 
 TEST_CASE("Manchester coach: no drift in steady running at 200 km/h", "[engine][system]") {
-  const auto sc = on_perfect_track("vehicles/manchester_coach.yaml", "lateral", 200 / 3.6);
-  const double share = (32000 + 2 * 2615 + 4 * 1813) * engine::kGravity / 8;
-  double max_state = 0, max_dQ = 0;
-  engine::simulate(sc.model, sc.integrator, sc.x0, 3.0, 0.01, [&](double, const Eigen::VectorXd& x, const engine::Data& d) {
-    max_state = std::max(max_state, x.cwiseAbs().maxCoeff());
-    for (const auto& w : d.wheel) max_dQ = std::max(max_dQ, std::abs(w.Q - share) / share);
-  });
-  CHECK(max_state < 1e-9);
-  CHECK(max_dQ < 1e-3);
+  for (const char* model : {"lateral", "full"}) {
+    const auto sc = on_perfect_track("vehicles/manchester_coach.yaml", model, 200 / 3.6);
+    const double share = (32000 + 2 * 2615 + 4 * 1813) * engine::kGravity / 8;
+    double max_state = 0, max_dQ = 0;
+    engine::simulate(sc.model, sc.integrator, sc.x0, 3.0, 0.01, [&](double, const Eigen::VectorXd& x, const engine::Data& d) {
+      max_state = std::max(max_state, x.cwiseAbs().maxCoeff());
+      for (const auto& w : d.wheel) max_dQ = std::max(max_dQ, std::abs(w.Q - share) / share);
+    });
+    INFO(model << " wheelset model: max |state| " << max_state << ", max wheel-load deviation " << max_dQ);
+    // Full model: the statics residual (~1e-6 N) rings the undamped elastic-contact
+    // modes at the 1e-8 level (m, rad, m/s); no growth, no drift.
+    CHECK(max_state < (std::string(model) == "full" ? 1e-7 : 1e-9));
+    CHECK(max_dQ < 1e-3);
+  }
 }
 
 TEST_CASE("bogie under a fixed car body: frame weight shared by primary and secondary springs", "[engine][system]") {
