@@ -41,19 +41,14 @@ int run_demo(const std::string& out_dir) {
 
   const double muN = set.material.mu * set.cases.front().input.patch.Fz;
   std::printf("railsim demo: tangential contact models on typical wheel-rail contacts\n");
-  std::printf("steel E = %.0f GPa, nu = %.2f, mu = %.2f; Fz = %.0f kN; patch a = %.2f mm, b = %.2f mm, p0 = %.0f MPa\n\n",
+  std::printf("steel E = %.0f GPa, nu = %.2f, mu = %.2f; Fz = %.0f kN; patch a = %.2f mm, b = %.2f mm, p0 = %.0f MPa\n",
               set.material.E / 1e9, set.material.nu, set.material.mu, set.cases.front().input.patch.Fz / 1e3,
               set.cases.front().input.patch.a * 1e3, set.cases.front().input.patch.b * 1e3,
               set.cases.front().input.patch.p0 / 1e6);
-  std::printf("%-14s", "case");
-  for (const auto& c : set.cases) std::printf("%15s", c.id.c_str());
-  std::printf("\n%-14s", "xi/eta/phi");
-  for (const auto& c : set.cases) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%g/%g/%g", c.input.creep.xi, c.input.creep.eta, c.input.creep.phi);
-    std::printf("%15s", buf);
-  }
-  std::printf("\n\nFx/Fy in kN (* = outside the model's validity domain); |F|/(mu Fz); cost per call\n");
+  for (const auto& c : set.cases)
+    std::printf("  %-14s xi = %-8g eta = %-8g phi = %g 1/m\n", c.id.c_str(), c.input.creep.xi, c.input.creep.eta,
+                c.input.creep.phi);
+  std::printf("\nFx/Fy in kN (* = outside the model's validity domain); |F|/(mu Fz); cost per call\n");
   std::printf("%-18s", "model");
   for (const auto& c : set.cases) std::printf("%15s", c.id.c_str());
   std::printf("%9s\n", "ns/call");
