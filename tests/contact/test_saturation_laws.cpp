@@ -6,6 +6,8 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdlib>
+#include <new>
 #include <string>
 
 #include "contact/hertz.hpp"
@@ -15,6 +17,19 @@
 #include "core/errors.hpp"
 
 using namespace railsim::contact;
+
+// Allocation counter for the "no allocation in solve()" check (counts only while enabled).
+namespace {
+long g_allocations = 0;
+bool g_count_allocations = false;
+}  // namespace
+void* operator new(std::size_t n) {
+  if (g_count_allocations) ++g_allocations;
+  if (void* p = std::malloc(n ? n : 1)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace {
 
@@ -179,4 +194,31 @@ TEST_CASE("Polach: kA and kS and the friction decrease", "[saturation][polach]")
   }
   CHECK(peak < in0.material.mu * in0.patch.Fz);
   CHECK(at_large < 0.2 * peak);
+}
+
+TEST_CASE("saturation laws do not allocate in solve", "[saturation]") {
+  // The counter itself works (a direct call of the replaceable function is never elided).
+  g_allocations = 0;
+  g_count_allocations = true;
+  void* probe = ::operator new(64);
+  g_count_allocations = false;
+  ::operator delete(probe);
+  REQUIRE(g_allocations == 1);
+  ContactInput in = tread_contact();
+  for (const char* law : {"linear", "linear_sat", "vermeulen_johnson", "she", "chopaya", "polach"}) {
+    const auto model = make_tangential_model(law);
+    in.creep = {1e-3, 1e-3, 0.1};
+    model->solve(in, nullptr);  // warm-up: one-time tables
+    g_allocations = 0;
+    g_count_allocations = true;
+    double sum = 0.0;
+    for (int i = 0; i < 100; ++i) {
+      in.creep = {1e-4 * i, -2e-5 * i, 0.01 * i};
+      sum += model->solve(in, nullptr).Fx;
+    }
+    g_count_allocations = false;
+    INFO(law);
+    CHECK(g_allocations == 0);
+    CHECK(std::isfinite(sum));
+  }
 }
