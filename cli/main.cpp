@@ -20,9 +20,10 @@ int main(int argc, char** argv) {
 
   railsim::cli::CommandRunner run;
   railsim::cli::register_version(app, run);
+  railsim::cli::register_run(app, run);
+  railsim::cli::register_critical_speed(app, run);
   railsim::cli::register_contact(app, run);
   railsim::cli::register_demo(app, run);
-  railsim::cli::register_run(app, run);
   railsim::cli::register_geometry(app, run);
   railsim::cli::register_conicity(app, run);
   railsim::cli::register_track(app, run);
