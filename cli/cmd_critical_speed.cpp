@@ -44,13 +44,36 @@ struct CriticalSpeedArgs {
   bool compare_models = false;
   std::string models = "coefficients,linear_sat,she,chopaya,polach";
   bool baseline = true;
-  double v_min_kmh = 80, v_max_kmh = 300, v_step_kmh = 20;
-  double duration = 6.0;
-  double large = 8.0, small = 0.5, threshold = 0.5;  // mm
-  double deceleration = 0.5;                          // m/s^2
+  // Sweep settings: NaN = not given on the command line, take the scenario's
+  // `critical_speed` section (engine::CriticalSpeedSettings) or its defaults.
+  double v_min_kmh = NAN, v_max_kmh = NAN, v_step_kmh = NAN;
+  double duration = NAN;
+  double large = NAN, small = NAN, threshold = NAN;  // mm
+  double deceleration = NAN;                          // m/s^2
   bool up_branch = true;
   int threads = 0;
+  double ramp_start_kmh = 0.0, ramp_disturbance = 0.0;  // from the scenario only
 };
+
+// Command-line values where given, else the scenario's settings.
+CriticalSpeedArgs resolve_settings(CriticalSpeedArgs a, const engine::CriticalSpeedSettings& s) {
+  auto pick = [](double& cli, double scen) {
+    if (std::isnan(cli)) cli = scen;
+  };
+  const bool range_given = !std::isnan(a.v_max_kmh);
+  pick(a.v_min_kmh, s.v_min_kmh);
+  pick(a.v_max_kmh, s.v_max_kmh);
+  pick(a.v_step_kmh, s.v_step_kmh);
+  pick(a.duration, s.duration);
+  const bool disturbance_given = !std::isnan(a.large);
+  pick(a.large, s.disturbance_mm);
+  pick(a.small, s.small_disturbance_mm);
+  pick(a.threshold, s.threshold_mm);
+  pick(a.deceleration, s.deceleration);
+  a.ramp_start_kmh = range_given || s.ramp_start_kmh <= 0 ? a.v_max_kmh : s.ramp_start_kmh;
+  a.ramp_disturbance = disturbance_given || s.ramp_disturbance_mm <= 0 ? a.large : s.ramp_disturbance_mm;
+  return a;
+}
 
 struct Outcome {
   double critical = NAN, linear = NAN, wall = 0.0;
@@ -105,10 +128,10 @@ Outcome analyse(const engine::Scenario& sc, const CriticalSpeedArgs& a, const st
     }
   } else {
     engine::RampingOptions o;
-    o.v_start = v_hi;
+    o.v_start = a.ramp_start_kmh / 3.6;
     o.v_end = v_lo;
     o.deceleration = a.deceleration;
-    o.disturbance = a.large * 1e-3;
+    o.disturbance = a.ramp_disturbance * 1e-3;
     o.threshold = a.threshold * 1e-3;
     const auto r = engine::ramping(sc, o);
     out.critical = r.critical_speed;
@@ -147,16 +170,31 @@ void fill_summary(Json& s, const engine::Scenario& sc, const CriticalSpeedArgs& 
   s.set("critical_speed_kmh", std::isnan(o.critical) ? Json(nullptr) : Json(o.critical * 3.6));
   s.set("linear_critical_speed_kmh", std::isnan(o.linear) ? Json(nullptr) : Json(o.linear * 3.6));
   s.set("speed_range_kmh", results::Json::array().push(a.v_min_kmh).push(a.v_max_kmh));
+  Json set = Json::object();
+  if (a.method == "bifurcation") {
+    set.set("v_step_kmh", a.v_step_kmh);
+    set.set("duration_s", a.duration);
+    set.set("large_disturbance_mm", a.large);
+    set.set("small_disturbance_mm", a.small);
+    set.set("up_branch", a.up_branch);
+  } else {
+    set.set("start_speed_kmh", a.ramp_start_kmh);
+    set.set("disturbance_mm", a.ramp_disturbance);
+    set.set("deceleration_m_s2", a.deceleration);
+  }
+  set.set("threshold_mm", a.threshold);
+  s.set("settings", set);
   s.set("wall_time_s", o.wall);
 }
 
-int run_critical_speed(const CriticalSpeedArgs& a) {
+int run_critical_speed(const CriticalSpeedArgs& args) {
   const engine::MpiContext mpi = engine::mpi_context();
+  engine::Scenario base = engine::load_scenario(args.scenario);
+  const CriticalSpeedArgs a = resolve_settings(args, base.critical_speed);
   if (!(a.v_min_kmh > 0 && a.v_max_kmh > a.v_min_kmh))
     throw InputError("--v-min/--v-max: need 0 < v-min < v-max (got " + std::to_string(a.v_min_kmh) + ", " +
                      std::to_string(a.v_max_kmh) + ")");
   if (!(a.v_step_kmh > 0)) throw InputError("--v-step: expected a positive number");
-  engine::Scenario base = engine::load_scenario(a.scenario);
   contact::ReductionFactors k;
   const contact::ReductionFactors* kp = nullptr;
   if (!a.reduction.empty()) {
@@ -272,24 +310,22 @@ void register_critical_speed(CLI::App& app, CommandRunner& run) {
   cmd->add_flag("--compare-models", a->compare_models, "Run once per contact model (see --models) and tabulate");
   cmd->add_option("--models", a->models, "Models for --compare-models, comma-separated")->capture_default_str();
   cmd->add_flag("!--no-baseline", a->baseline, "With --reduction, skip the unreduced comparison run");
-  cmd->add_option("--v-min", a->v_min_kmh, "Lowest speed [km/h]")->capture_default_str();
-  cmd->add_option("--v-max", a->v_max_kmh, "Highest speed (ramping: start speed) [km/h]")->capture_default_str();
-  cmd->add_option("--v-step", a->v_step_kmh, "Speed step of the bifurcation sweep [km/h]")->capture_default_str();
-  cmd->add_option("--duration", a->duration, "Simulated time per sweep point [s]")
-      ->check(CLI::Range(0.5, 600.0))
-      ->capture_default_str();
-  cmd->add_option("--disturbance", a->large, "Large initial lateral shift (down branch, ramping) [mm]")
-      ->check(CLI::Range(0.01, 20.0))
-      ->capture_default_str();
-  cmd->add_option("--small-disturbance", a->small, "Small initial lateral shift (up branch) [mm]")
-      ->check(CLI::Range(0.001, 20.0))
-      ->capture_default_str();
-  cmd->add_option("--threshold", a->threshold, "Settled amplitude that counts as hunting [mm]")
-      ->check(CLI::Range(0.001, 20.0))
-      ->capture_default_str();
-  cmd->add_option("--deceleration", a->deceleration, "Ramping deceleration [m/s^2]")
-      ->check(CLI::Range(0.001, 10.0))
-      ->capture_default_str();
+  // Defaults of the sweep settings: the scenario's `critical_speed` section, else
+  // engine::CriticalSpeedSettings (80..300 km/h in 20 km/h steps, 6 s, 8 / 0.5 mm, 0.5 mm, 0.5 m/s^2).
+  cmd->add_option("--v-min", a->v_min_kmh, "Lowest speed [km/h] (default: scenario, else 80)");
+  cmd->add_option("--v-max", a->v_max_kmh, "Highest speed, also the ramping start speed [km/h] (default: scenario, else 300)");
+  cmd->add_option("--v-step", a->v_step_kmh, "Speed step of the bifurcation sweep [km/h] (default: scenario, else 20)");
+  cmd->add_option("--duration", a->duration, "Simulated time per sweep point [s] (default: scenario, else 6)")
+      ->check(CLI::Range(0.5, 600.0));
+  cmd->add_option("--disturbance", a->large,
+                  "Large initial lateral shift (down branch, ramping) [mm] (default: scenario, else 8)")
+      ->check(CLI::Range(0.01, 20.0));
+  cmd->add_option("--small-disturbance", a->small, "Small initial lateral shift (up branch) [mm] (default: scenario, else 0.5)")
+      ->check(CLI::Range(0.001, 20.0));
+  cmd->add_option("--threshold", a->threshold, "Settled amplitude that counts as hunting [mm] (default: scenario, else 0.5)")
+      ->check(CLI::Range(0.001, 20.0));
+  cmd->add_option("--deceleration", a->deceleration, "Ramping deceleration [m/s^2] (default: scenario, else 0.5)")
+      ->check(CLI::Range(0.001, 10.0));
   cmd->add_flag("!--no-up-branch", a->up_branch, "Sweep only the strongly disturbed (down) branch");
   cmd->add_option("--threads", a->threads, "Worker threads per process (0: all cores)")
       ->check(CLI::Range(0, 256))

@@ -53,6 +53,28 @@ std::shared_ptr<const ContactGeometry> load_geometry(const InputNode& g, const s
   g.at("type").fail("expected 'conical' or 'table' (got '" + type + "')");
 }
 
+CriticalSpeedSettings load_critical_speed_settings(const InputNode& n) {
+  n.allow_only({"v_min_kmh", "v_max_kmh", "v_step_kmh", "duration", "disturbance_mm", "small_disturbance_mm",
+                "threshold_mm", "ramping"});
+  CriticalSpeedSettings c;
+  c.v_min_kmh = n.has("v_min_kmh") ? n.in_range("v_min_kmh", 0.0, 720.0, true) : c.v_min_kmh;
+  c.v_max_kmh = n.has("v_max_kmh") ? n.in_range("v_max_kmh", 0.0, 720.0, true) : c.v_max_kmh;
+  if (c.v_max_kmh <= c.v_min_kmh) n.fail("need v_min_kmh < v_max_kmh");
+  c.v_step_kmh = n.has("v_step_kmh") ? n.in_range("v_step_kmh", 0.0, 720.0, true) : c.v_step_kmh;
+  c.duration = n.has("duration") ? n.in_range("duration", 0.5, 600.0) : c.duration;
+  c.disturbance_mm = n.has("disturbance_mm") ? n.in_range("disturbance_mm", 0.01, 20.0) : c.disturbance_mm;
+  c.small_disturbance_mm =
+      n.has("small_disturbance_mm") ? n.in_range("small_disturbance_mm", 0.001, 20.0) : c.small_disturbance_mm;
+  c.threshold_mm = n.has("threshold_mm") ? n.in_range("threshold_mm", 0.001, 20.0) : c.threshold_mm;
+  if (auto r = n.find("ramping")) {
+    r->allow_only({"v_start_kmh", "disturbance_mm", "deceleration"});
+    if (r->has("v_start_kmh")) c.ramp_start_kmh = r->in_range("v_start_kmh", 0.0, 720.0, true);
+    if (r->has("disturbance_mm")) c.ramp_disturbance_mm = r->in_range("disturbance_mm", 0.01, 20.0);
+    if (r->has("deceleration")) c.deceleration = r->in_range("deceleration", 0.001, 10.0);
+  }
+  return c;
+}
+
 }  // namespace
 
 Scenario load_scenario(const std::string& path) {
@@ -67,7 +89,7 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
   root.allow_only({"name", "description", "vehicle", "track", "speed", "speed_kmh", "acceleration",
                    "start_distance", "duration", "output_interval", "wheelset_model", "max_lateral_shift",
                    "wheelset_roll",
-                   "contact", "integrator", "initial"});
+                   "contact", "integrator", "initial", "critical_speed"});
   Scenario sc;
   sc.name = root.string_or("name", "");
   Model& m = sc.model;
@@ -185,6 +207,7 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
   }
   m.coupling = WheelRailCoupling(co);
   for (auto& w : m.wheelsets) w.hertz_q0[0] = w.hertz_q0[1] = q0;
+  if (auto cs = root.find("critical_speed")) sc.critical_speed = load_critical_speed_settings(*cs);
   sc.x0 = Eigen::VectorXd::Zero(m.n_states);
   if (auto init = root.find("initial")) {
     for (const auto& key : init->keys()) {

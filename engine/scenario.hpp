@@ -26,6 +26,10 @@
 //   integrator: {method: cvode_bdf, rtol: 1e-6, atol: 1e-8, max_step: 0.001, jacobian: fd,
 //                linear_solver: dense, max_steps: 100000, min_step: 1e-12}
 //   initial: {ws1.lateral: 0.001}       # state name: value (deviations)
+//   critical_speed:                     # optional: analysis settings that suit this vehicle
+//     {v_min_kmh: 150, v_max_kmh: 350, v_step_kmh: 10, duration: 6, disturbance_mm: 5,
+//      small_disturbance_mm: 0.5, threshold_mm: 0.5,
+//      ramping: {v_start_kmh: 290, disturbance_mm: 0.5, deceleration: 0.5}}
 #pragma once
 
 #include <Eigen/Core>
@@ -37,6 +41,19 @@
 
 namespace railsim::engine {
 
+// Settings of `railsim critical-speed` for this scenario (the command line
+// overrides them). Speeds in km/h, lateral shifts in mm, as on the command line.
+struct CriticalSpeedSettings {
+  double v_min_kmh = 80.0, v_max_kmh = 300.0, v_step_kmh = 20.0;
+  double duration = 6.0;               // simulated time per sweep point [s]
+  double disturbance_mm = 8.0;         // down branch
+  double small_disturbance_mm = 0.5;   // up branch
+  double threshold_mm = 0.5;           // settled amplitude that counts as hunting
+  double ramp_start_kmh = 0.0;         // 0: v_max_kmh
+  double ramp_disturbance_mm = 0.0;    // 0: disturbance_mm
+  double deceleration = 0.5;           // [m/s^2]
+};
+
 struct Scenario {
   std::string name;
   std::string file;
@@ -46,6 +63,7 @@ struct Scenario {
   double output_interval = 0.01;
   Eigen::VectorXd x0;
   std::string geometry_description;
+  CriticalSpeedSettings critical_speed;
 };
 
 Scenario load_scenario(const std::string& path);

@@ -42,7 +42,8 @@ case "$mode" in
   build) ;;
   run)
     mkdir -p results_out
-    "build/$preset/railsim" demo --out results_out/demo
+    "build/$preset/railsim" critical-speed scenarios/manchester_coach_critical_speed.yaml \
+      --reduction elastic_fe --out results_out/critical_speed
     ;;
   test)
     ctest --preset "$preset" -j2

@@ -25,7 +25,8 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // in-phase start that excites the hunting mode of bogie vehicles most directly).
 Eigen::VectorXd disturbed_state(const Scenario& sc, double shift) {
   Eigen::VectorXd x = sc.x0;
-  for (const auto& w : sc.model.wheelsets) x[sc.model.bodies[w.body].q_index[kLat]] = shift;
+  for (const auto& b : sc.model.bodies)
+    if (b.q_index[kLat] >= 0) x[b.q_index[kLat]] = shift;
   return x;
 }
 

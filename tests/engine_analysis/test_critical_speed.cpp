@@ -1,0 +1,149 @@
+// Critical speed: bifurcation sweep and ramping against the linear critical
+// speed (eigenvalues) where the model is linear, the subcritical branch of a
+// nonlinear profile, and the Manchester coach of the main job (ramping vs
+// bifurcation within 5 %, reduced creep coefficients lower the critical speed).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "contact/reduction.hpp"
+#include "engine/analysis/critical_speed.hpp"
+#include "test_support.hpp"
+
+using namespace railsim::engine;
+
+namespace {
+
+const BifurcationPoint* find_point(const BifurcationResult& r, const std::string& branch, double speed) {
+  for (const auto& p : r.points)
+    if (p.branch == branch && std::abs(p.speed - speed) < 1e-6) return &p;
+  return nullptr;
+}
+
+}  // namespace
+
+// Conical wheels (lambda = 0.2), linear creep forces, flange as a stiff spring
+// beyond a 9 mm dead band: linear up to the flange, so the hunting onset is the
+// Hopf point of the eigenvalue analysis, and above it the limit cycle grows from
+// zero (supercritical).
+TEST_CASE("single wheelset, linear model: bifurcation and ramping find the linear critical speed",
+          "[critical_speed]") {
+  const Scenario sc = load_scenario(railsim::test::data_path("scenarios/single_wheelset_flange.yaml"));
+  const double v_lin = linear_critical_speed(sc, 20.0, 80.0);
+  // physics-reference.md 8.1 (Wickens): 45.59 m/s for this wheelset; the
+  // bisection is checked against it in test_linearisation.cpp, here only sanity.
+  REQUIRE(v_lin == Approx(45.6).margin(0.2));
+
+  const std::string dir = railsim::test::temp_dir("cs_linear");
+  BifurcationOptions o;
+  o.v_min = 43.0;
+  o.v_max = 49.0;
+  o.v_step = 0.5;
+  o.duration = 10.0;
+  o.threads = 2;
+  const BifurcationResult r = bifurcation_sweep(sc, o, dir + "/points.csv");
+  // Tolerance: one speed step (0.5 m/s, 1.1 %). Within about 1 % of V_L the
+  // motion grows or decays so slowly (rate ~ V - V_L) that 10 s cannot settle
+  // it: a point there may still count as hunting (decaying by less than
+  // decay_tolerance over the tail).
+  CHECK(std::abs(r.nonlinear_critical_speed - v_lin) <= o.v_step);
+  for (const auto& p : r.points) {
+    // Clearly below V_L: no limit cycle on either branch.
+    if (p.speed < v_lin - o.v_step) CHECK_FALSE(is_hunting(p, o));
+    // Clearly above: hunting on both branches, and where both have settled
+    // (|growth| < 1 % over the tail) on the same limit cycle (one attractor).
+    if (p.speed > v_lin + o.v_step) CHECK(is_hunting(p, o));
+    const auto* up = find_point(r, "up", p.speed);
+    REQUIRE(up != nullptr);
+    if (p.branch == "down" && std::abs(p.growth) < 0.01 && std::abs(up->growth) < 0.01 && p.amplitude > o.threshold)
+      CHECK(up->amplitude == Approx(p.amplitude).epsilon(0.02));
+  }
+
+  RampingOptions ro;
+  ro.v_start = 52.0;
+  ro.v_end = 38.0;
+  ro.deceleration = 0.25;
+  const RampingResult rr = ramping(sc, ro);
+  REQUIRE(rr.hunting_at_start);
+  REQUIRE_FALSE(rr.hunting_at_end);
+  // Ramping lags the quasi-static answer by the decay time of the transient;
+  // at 0.25 m/s^2 within 2 % below V_L (measured: 1.4 %).
+  CHECK(rr.critical_speed <= v_lin * 1.002);
+  CHECK(rr.critical_speed >= v_lin * 0.98);
+}
+
+// S1002/UIC60 1:40: the equivalent conicity rises towards the flange, the
+// onset is subcritical: from a large disturbance the wheelset hunts far below
+// V_L, from a small one it stays centred up to V_L (two coexisting attractors).
+TEST_CASE("single wheelset, S1002/UIC60: subcritical branch below the linear critical speed",
+          "[critical_speed]") {
+  const Scenario sc = load_scenario(railsim::test::data_path("scenarios/single_wheelset_s1002.yaml"));
+  const double v_lin = linear_critical_speed(sc, 40.0, 200.0);
+  REQUIRE(std::isfinite(v_lin));
+  const std::string dir = railsim::test::temp_dir("cs_s1002");
+  BifurcationOptions o;
+  o.v_min = 0.60 * v_lin;
+  o.v_max = 0.95 * v_lin;
+  o.v_step = 0.05 * v_lin;
+  o.duration = 6.0;
+  o.large_disturbance = 8e-3;
+  o.small_disturbance = 0.5e-3;
+  o.threads = 2;
+  const BifurcationResult r = bifurcation_sweep(sc, o, dir + "/points.csv");
+  REQUIRE(std::isfinite(r.nonlinear_critical_speed));
+  // Measured: V_NL = 310 km/h against V_L = 433 km/h (ratio 0.72).
+  CHECK(r.nonlinear_critical_speed < 0.85 * v_lin);
+  int coexisting = 0;
+  for (const auto& p : r.points) {
+    if (p.branch != "down" || !is_hunting(p, o)) continue;
+    const auto* up = find_point(r, "up", p.speed);
+    REQUIRE(up != nullptr);
+    CHECK(p.amplitude > 3e-3);  // flange-contact limit cycle (S1002 flange at ~6-7 mm)
+    if (!is_hunting(*up, o)) ++coexisting;
+  }
+  CHECK(coexisting >= 3);
+}
+
+// The main job's scenario (Kalker + CHOPAYA on the RSGEO S1002/UIC60 table).
+TEST_CASE("Manchester coach: ramping and bifurcation agree, reduced creep coefficients lower the critical speed",
+          "[critical_speed]") {
+  const Scenario sc = load_scenario(railsim::test::source_path("scenarios/manchester_coach_critical_speed.yaml"));
+  const auto& cs = sc.critical_speed;
+  const std::string dir = railsim::test::temp_dir("cs_coach");
+  BifurcationOptions o;
+  o.v_min = 250 / 3.6;
+  o.v_max = 320 / 3.6;
+  o.v_step = cs.v_step_kmh / 3.6;
+  o.duration = cs.duration;
+  o.large_disturbance = cs.disturbance_mm * 1e-3;
+  o.up_branch = false;
+  o.threads = 2;
+  const BifurcationResult b = bifurcation_sweep(sc, o, dir + "/full.csv");
+  REQUIRE(std::isfinite(b.nonlinear_critical_speed));
+
+  RampingOptions ro;
+  ro.v_start = cs.ramp_start_kmh / 3.6;
+  ro.v_end = 220 / 3.6;
+  ro.deceleration = cs.deceleration;
+  const RampingResult rr = ramping(sc, ro);
+  REQUIRE(rr.hunting_at_start);
+  REQUIRE_FALSE(rr.hunting_at_end);
+  // Issue 8: within 5 % (measured: bifurcation 290 km/h at 10 km/h steps,
+  // ramping 277.5 km/h, -4.3 %).
+  CHECK(std::abs(rr.critical_speed - b.nonlinear_critical_speed) / b.nonlinear_critical_speed < 0.05);
+
+  // Toumi's elastic finite-element factors (k11 0.72, k22 = k23 0.56).
+  const auto k = railsim::contact::parse_reduction("elastic_fe", "test");
+  const Scenario reduced = with_contact(sc, "", &k);
+  o.v_min = 200 / 3.6;
+  o.v_max = 260 / 3.6;
+  const BifurcationResult br = bifurcation_sweep(reduced, o, dir + "/reduced.csv");
+  REQUIRE(std::isfinite(br.nonlinear_critical_speed));
+  // Measured: 230 km/h against 290 km/h (-21 %); the mission's range is up to 40 %.
+  const double change = (br.nonlinear_critical_speed - b.nonlinear_critical_speed) / b.nonlinear_critical_speed;
+  CHECK(change < -0.10);
+  CHECK(change > -0.40);
+  const double lin = linear_critical_speed(sc, 50.0, 150.0);
+  const double lin_reduced = linear_critical_speed(reduced, 50.0, 150.0);
+  CHECK(lin_reduced < 0.9 * lin);
+}
