@@ -77,6 +77,7 @@ CriticalSpeedArgs resolve_settings(CriticalSpeedArgs a, const engine::CriticalSp
 
 struct Outcome {
   double critical = NAN, linear = NAN, wall = 0.0;
+  std::vector<engine::BifurcationPoint> points;  // bifurcation sweeps only
 };
 
 std::string kmh(double v) {
@@ -107,6 +108,7 @@ Outcome analyse(const engine::Scenario& sc, const CriticalSpeedArgs& a, const st
     o.use_mpi = true;
     const auto r = engine::bifurcation_sweep(sc, o, dir + "/bifurcation.csv");
     out.critical = r.nonlinear_critical_speed;
+    out.points = r.points;
     summary.set("speed_resolution_kmh", a.v_step_kmh);
     if (mpi.rank == 0) {
       results::Chart c;
@@ -121,6 +123,12 @@ Outcome analyse(const engine::Scenario& sc, const CriticalSpeedArgs& a, const st
           if (p.branch == branch) s.x.push_back(p.speed * 3.6), s.y.push_back(p.amplitude * 1e3);
         if (!s.x.empty()) c.series.push_back(s);
       }
+      // Runs that stopped (a wheel unloaded or left the contact table): their
+      // amplitude is the one reached before the stop, not a settled one.
+      results::ChartSeries stopped{"run stopped (wheel unloaded): counted as hunting", {}, {}, "markers", "k"};
+      for (const auto& p : r.points)
+        if (p.failed) stopped.x.push_back(p.speed * 3.6), stopped.y.push_back(p.amplitude * 1e3);
+      if (!stopped.x.empty()) c.series.push_back(stopped);
       if (!std::isnan(out.linear)) c.lines.push_back({out.linear * 3.6, "linear critical speed", "r", true});
       if (!std::isnan(out.critical)) c.lines.push_back({out.critical * 3.6, "nonlinear critical speed", "g", true});
       c.lines.push_back({a.threshold, "hunting threshold", "0.5", false});
@@ -271,6 +279,25 @@ int run_critical_speed(const CriticalSpeedArgs& args) {
     if (!std::isnan(ref.linear) && !std::isnan(o.linear))
       b.set("linear_critical_speed_change_percent", 100.0 * (o.linear - ref.linear) / ref.linear);
     summary.set("unreduced", b);
+    if (mpi.rank == 0 && a.method == "bifurcation") {
+      // Both down branches on one chart: how far the reduction moves the hunting onset.
+      results::Chart c;
+      c.title = "Effect of the creep-coefficient reduction: " + sc.name;
+      c.xlabel = "speed [km/h]";
+      c.ylabel = "settled lateral amplitude, down branch [mm]";
+      const std::pair<const Outcome*, std::string> cases[] = {
+          {&ref, "unreduced (k = 1)"}, {&o, "reduction " + contact::describe_reduction(k)}};
+      const char* colours[] = {"tab:blue", "tab:red"};
+      for (int i = 0; i < 2; ++i) {
+        results::ChartSeries s{cases[i].second, {}, {}, "line+markers", colours[i]};
+        for (const auto& p : cases[i].first->points)
+          if (p.branch == "down") s.x.push_back(p.speed * 3.6), s.y.push_back(p.amplitude * 1e3);
+        c.series.push_back(s);
+        if (!std::isnan(cases[i].first->critical))
+          c.lines.push_back({cases[i].first->critical * 3.6, "critical speed, " + cases[i].second, colours[i], true});
+      }
+      results::draw(c, a.out + "/bifurcation_reduction.png");
+    }
   }
   if (mpi.rank == 0) {
     summary.write_file(a.out + "/summary.json");
