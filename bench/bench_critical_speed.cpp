@@ -1,0 +1,67 @@
+// Wall time of the main job's bifurcation sweep (scenarios/
+// manchester_coach_critical_speed.yaml: the Manchester coach on the S1002/UIC60
+// table, Kalker + CHOPAYA, its own sweep settings: 150..350 km/h in 10 km/h
+// steps, both branches, 10 s per point = 42 runs) and its scaling from one to
+// two worker threads. Counters: "points", "s_per_point" (wall), and on the
+// two-thread run "speedup" = T1/T2 and "efficiency" = T1/(2 T2) (target > 0.85).
+// Each benchmark runs the whole sweep once (Iterations(1)): a few minutes.
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <filesystem>
+#include <string>
+
+#include "engine/analysis/critical_speed.hpp"
+#include "engine/scenario.hpp"
+
+namespace {
+
+std::string scenario_path(const char* file) {
+  return (std::filesystem::path(__FILE__).parent_path().parent_path() / "scenarios" / file).string();
+}
+
+// Wall time of the one-thread sweep, for the speed-up of the two-thread one
+// (benchmarks run in registration order).
+double one_thread_wall = 0.0;
+
+void BM_DefaultSweep(benchmark::State& state) {
+  using namespace railsim::engine;
+  const Scenario sc = load_scenario(scenario_path("manchester_coach_critical_speed.yaml"));
+  const auto& cs = sc.critical_speed;
+  BifurcationOptions o;
+  o.v_min = cs.v_min_kmh / 3.6;
+  o.v_max = cs.v_max_kmh / 3.6;
+  o.v_step = cs.v_step_kmh / 3.6;
+  o.duration = cs.duration;
+  o.large_disturbance = cs.disturbance_mm * 1e-3;
+  o.small_disturbance = cs.small_disturbance_mm * 1e-3;
+  o.threshold = cs.threshold_mm * 1e-3;
+  o.threads = static_cast<int>(state.range(0));
+  const auto dir = std::filesystem::temp_directory_path() / "railsim_bench_sweep";
+  double wall = 0.0;
+  std::size_t points = 0;
+  for (auto _ : state) {
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    const auto t0 = std::chrono::steady_clock::now();
+    const BifurcationResult r = bifurcation_sweep(sc, o, (dir / "points.csv").string());
+    wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    points = r.points.size();
+    state.SetIterationTime(wall);
+    state.counters["critical_speed_kmh"] = r.nonlinear_critical_speed * 3.6;
+  }
+  std::filesystem::remove_all(dir);
+  state.counters["points"] = static_cast<double>(points);
+  state.counters["s_per_point"] = wall / static_cast<double>(points);
+  if (o.threads == 1) one_thread_wall = wall;
+  if (o.threads == 2 && one_thread_wall > 0) {
+    state.counters["speedup"] = one_thread_wall / wall;
+    state.counters["efficiency"] = one_thread_wall / (2.0 * wall);
+  }
+}
+
+}  // namespace
+
+BENCHMARK(BM_DefaultSweep)->Arg(1)->Arg(2)->ArgName("threads")->Iterations(1)->UseManualTime()->Unit(benchmark::kSecond);
+
+BENCHMARK_MAIN();
