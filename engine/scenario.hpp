@@ -14,7 +14,7 @@
 //   contact:
 //     geometry: {type: conical, r0: 0.46, conicity: 0.2, l0: 0.75, contact_angle: 0,
 //                flange_clearance: 0.009, flange_stiffness: 1.5e7, max_shift: 0.05}
-//             | {type: table, file: ../../shared/reference/dytsi/RSGEO_S1002_UIC60_1in40.dat}
+//             | {type: table, file: ../vehicles/contact_tables/RSGEO_S1002_UIC60_1in40.dat}
 //     tangential: coefficients | <contact registry name>
 //     saturation: none | she            # coefficients only
 //     material: {E: 2.1e11, nu: 0.28, mu: 0.3, shear_modulus: 8.2e10}
