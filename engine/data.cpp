@@ -7,6 +7,7 @@ Data::Data(const Model& model)
     : motion(model.bodies.size()),
       force(model.bodies.size()),
       track(model.bodies.size()),
+      vehicle_motion(model.bodies.size()),
       wheel(2 * model.wheelsets.size()) {
   for (std::size_t i = 0; i < wheel.size(); ++i) workspace.push_back(model.coupling.make_workspace());
   failure.reserve(512);

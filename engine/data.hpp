@@ -35,6 +35,11 @@ struct Data {
   std::vector<BodyMotion> motion;
   std::vector<GenForce> force;
   std::vector<TrackSample> track;      // per body, at its own distance
+  TrackSample reference;               // alignment at the vehicle reference distance s
+  // Per body: its motion in the frame at the vehicle reference distance (own
+  // motion + frame_offset, track_frame.hpp); what suspension elements between
+  // two bodies act on.
+  std::vector<BodyMotion> vehicle_motion;
   std::vector<WheelOutput> wheel;      // 2 per wheelset: left, right
   std::vector<std::unique_ptr<contact::TangentialWorkspace>> workspace;  // per wheel
   double t = 0.0, V = 0.0, s = 0.0;

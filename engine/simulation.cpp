@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "engine/system.hpp"
+#include "engine/wear_number.hpp"
 
 namespace railsim::engine {
 namespace {
@@ -66,7 +67,7 @@ std::vector<std::string> channel_names(const Model& model) {
     c.push_back(w.name + ".yaw");
     for (const char* side : {"L", "R"}) {
       const std::string p = w.name + "." + side + ".";
-      for (const char* q : {"Q", "Y", "Fx", "xi", "eta", "spin", "contact_y"}) c.push_back(p + q);
+      for (const char* q : {"Q", "Y", "Fx", "xi", "eta", "spin", "contact_y", "YQ", "Tgamma"}) c.push_back(p + q);
     }
   }
   return c;
@@ -83,7 +84,8 @@ void channel_row(const Model& model, double t, const Eigen::VectorXd& x, const D
     row.push_back(x[b.q_index[kYaw]]);
     for (int i = 0; i < 2; ++i) {
       const WheelOutput& o = d.wheel[2 * w + i];
-      row.insert(row.end(), {o.Q, o.Y, o.Fx, o.creep.xi, o.creep.eta, o.creep.phi, o.contact_y});
+      const double yq = o.Q > 0.0 ? o.Y / o.Q : 0.0;  // lifted wheel: no meaningful Y/Q
+      row.insert(row.end(), {o.Q, o.Y, o.Fx, o.creep.xi, o.creep.eta, o.creep.phi, o.contact_y, yq, wear_number(o)});
     }
   }
 }

@@ -35,7 +35,10 @@ using Observer = std::function<void(double t, const Eigen::VectorXd& x, const Da
 RunSummary simulate(const Model& model, const IntegratorOptions& options, const Eigen::VectorXd& x0,
                     double duration, double output_interval, const Observer& observer = {});
 
-// Channel names of the standard output (channels.csv) and one row of values.
+// Channel names of the standard output (channels.csv) and one row of values:
+// time, distance, speed; per wheelset <ws>.y, <ws>.yaw (relative to the
+// track); per wheel <ws>.<L|R>.Q, Y, Fx, xi, eta, spin, contact_y, YQ (Y/Q,
+// 0 for a lifted wheel), Tgamma (wear number, wear_number.hpp).
 std::vector<std::string> channel_names(const Model& model);
 void channel_row(const Model& model, double t, const Eigen::VectorXd& x, const Data& d, std::vector<double>& row);
 

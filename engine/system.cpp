@@ -12,12 +12,20 @@
 namespace railsim::engine {
 namespace {
 
+// Elements between two bodies act on the motions in the common reference frame
+// (Data::vehicle_motion); an element attached to the track (body -1) acts on the
+// body's motion relative to its own track frame.
+template <class Element>
+const std::vector<BodyMotion>& element_motion(const Element& e, const Data& d) {
+  return e.body_a < 0 || e.body_b < 0 ? d.motion : d.vehicle_motion;
+}
+
 void element_forces(const Model& model, Data& d, const double* x, double* xdot) {
-  for (const auto& e : model.springs) apply_spring_damper(e, d.motion, d.force);
-  for (const auto& e : model.bump_stops) apply_bump_stop(e, d.motion, d.force);
-  for (const auto& e : model.anti_roll_bars) apply_anti_roll_bar(e, d.motion, d.force);
+  for (const auto& e : model.springs) apply_spring_damper(e, element_motion(e, d), d.force);
+  for (const auto& e : model.bump_stops) apply_bump_stop(e, element_motion(e, d), d.force);
+  for (const auto& e : model.anti_roll_bars) apply_anti_roll_bar(e, element_motion(e, d), d.force);
   for (const auto& e : model.yaw_dampers) {
-    const double rate = apply_yaw_damper(e, x ? x[e.state] : 0.0, d.motion, d.force);
+    const double rate = apply_yaw_damper(e, x ? x[e.state] : 0.0, element_motion(e, d), d.force);
     if (xdot) xdot[e.state] = rate;
   }
 }
@@ -164,6 +172,16 @@ bool rhs(const Model& model, Data& d, double t, const double* x, double* xdot) {
   }
   if (model.wheelset_model == WheelsetModel::lateral)
     for (std::size_t w = 0; w < model.wheelsets.size(); ++w) wheelset_lateral_kinematics(model, d, int(w));
+  model.track->sample_alignment(d.s, d.reference);
+  for (std::size_t b = 0; b < nb; ++b) {
+    const RigidBody& body = model.bodies[b];
+    const BodyMotion off = frame_offset(d.reference, d.track[b], body.position.y(), body.position.z(), d.V);
+    BodyMotion& vm = d.vehicle_motion[b];
+    for (int k = 0; k < kNumDof; ++k) {
+      vm.q[k] = d.motion[b].q[k] + off.q[k];
+      vm.v[k] = d.motion[b].v[k] + off.v[k];
+    }
+  }
   element_forces(model, d, x, xdot);
   for (std::size_t w = 0; w < model.wheelsets.size(); ++w) {
     const bool ok = model.wheelset_model == WheelsetModel::full ? wheelset_full_forces(model, d, int(w), x, xdot)

@@ -5,6 +5,11 @@
 // (spring_damper, bump_stop, yaw_damper, anti_roll_bar) and the wheel-rail
 // forces of every wheelset (wheelset_lateral.hpp / wheelset_full.hpp), then
 // divide by the generalised masses (diagonal inertia in track axes).
+// Elements between two bodies act on the motions expressed in the track frame
+// at the vehicle reference distance (Data::vehicle_motion: own motion plus
+// the offset of the body's track frame, track_frame.hpp frame_offset), so that
+// in curves they see the change of heading, versine and cant between bodies;
+// elements to the track act on the body's motion in its own frame.
 //
 // finalize_model() assigns the state indices, computes the static
 // equilibrium of the suspension under gravity (linear statics, K q = F_g, with

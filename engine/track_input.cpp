@@ -8,6 +8,10 @@ void TrackInput::sample(double s, TrackSample& out) const {
   out.curvature = t.curvature;
   out.curvature_rate = t.dcurvature;
   out.cant = t.cant_angle;
+  out.cant_rate = t.dcant_angle;
+  out.heading = t.heading;
+  out.x = t.x;
+  out.y = t.y;
   const auto& ir = t.irregularity;
   out.lat_left = ir.left_lateral();
   out.lat_right = ir.right_lateral();
@@ -25,6 +29,10 @@ void TrackInput::sample_alignment(double s, TrackSample& out) const {
   out.curvature = t.curvature;
   out.curvature_rate = t.dcurvature;
   out.cant = t.cant_angle;
+  out.cant_rate = t.dcant_angle;
+  out.heading = t.heading;
+  out.x = t.x;
+  out.y = t.y;
 }
 
 std::string TrackInput::describe() const {

@@ -114,7 +114,7 @@ bool wheelset_full_forces(const Model& model, Data& d, int w, const double* x, d
   const double Iy = body.inertia.y();
   F[kLat] += Fy_sum;
   F[kVert] += Fz_sum;
-  F[kRoll] += Mx_sum + Iy * k.Omega * k.psidot;
+  F[kRoll] += Mx_sum + Iy * k.Omega * (k.psidot + d.V * k.kappa);  // absolute yaw rate (frame turns at V kappa)
   F[kYaw] += Mz_sum - Iy * k.Omega * k.phidot;
   xdot[ws.beta_state] = My_sum / Iy;
   return true;

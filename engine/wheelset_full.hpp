@@ -14,7 +14,8 @@
 //   yaw   M_z = -side a (X + Y psi) + Mz cos(theta),
 //   spin  M_y = -r (X + Y psi).
 // Gyroscopic moments of the spinning axle in a non-spinning frame:
-//   Ixx phi'' += Iyy Omega psi',  Izz psi'' -= Iyy Omega phi'
+//   Ixx phi'' += Iyy Omega (psi' + V kappa),  Izz psi'' -= Iyy Omega phi'
+// (psi' + V kappa: absolute yaw rate, the track frame turns at V kappa in a curve)
 // (Resal frame; DYTSI uses the body-frame Euler form with (Iy - Iz), §7.7).
 // Several contact points per wheel (one per table block, geometry_table.hpp):
 // each point has its own approach, normal load and creep forces, all summed.

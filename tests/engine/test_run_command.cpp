@@ -35,6 +35,38 @@ TEST_CASE("railsim run writes channels and summary", "[engine][cli]") {
   CHECK(js.find("\"rhs_calls\"") != std::string::npos);
   CHECK(js.find("\"real_time_factor\"") != std::string::npos);
   CHECK(js.find("\"max_lateral_shift\"") != std::string::npos);
+  // Y/Q and wear-number channels.
+  CHECK(csv.number(400, "ws1.L.YQ") == Approx(csv.number(400, "ws1.L.Y") / csv.number(400, "ws1.L.Q")));
+  CHECK(csv.number(400, "ws1.R.Tgamma") >= 0.0);
+}
+
+TEST_CASE("railsim run: running safety and curving of the coach in the R 300 m curve", "[engine][cli]") {
+  const std::string out = test::temp_dir("run_coach_R300");
+  const auto r =
+      test::run_railsim("run " + test::source_path("scenarios/manchester_coach_curve_R300.yaml") + " --out " + out);
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  const std::string js = slurp(out + "/summary.json");
+  for (const char* key : {"\"running_safety\"", "\"nadal_limit\"", "\"flange_angle_deg\"", "\"yq_instantaneous\"",
+                          "\"yq_2m\"", "\"sum_y_2m\"", "\"wheel_unloading\"", "\"en14363_pass\"", "\"curving\"",
+                          "\"angle_of_attack_mrad\"", "\"Tgamma\"", "\"sum_Y_expected_M_a_nc\""})
+    CHECK(js.find(key) != std::string::npos);
+  // S1002/UIC60 table: flank angle ~70 deg from the geometry (no fallback), mu = 0.3:
+  // Nadal (tan g - 0.3) / (1 + 0.3 tan g) = 1.347 at 70.11 deg.
+  CHECK(js.find("\"flange_angle_fallback\": false") != std::string::npos);
+  CHECK(js.find("\"nadal_limit\": 1.34") != std::string::npos);
+  CHECK(js.find("\"radius_m\": 300") != std::string::npos);
+  // 102 mm cant deficiency at 80 km/h: safe (EN 14363 and Nadal).
+  CHECK(js.find("\"running_safety\": {\n    \"pass\": true") != std::string::npos);
+  CHECK(std::ifstream(out + "/yq.png").good());
+  const auto csv = results::read_csv(out + "/channels.csv");
+  // Leading wheel, outer (left) side in the body of the right-hand curve (reference 300 m):
+  // flange contact, |Y/Q| between 0.2 and 0.8, wear number well above the inner wheel's.
+  std::size_t i = 0;
+  while (i + 1 < csv.rows.size() && csv.number(i, "distance") < 300.0) ++i;
+  CHECK(csv.number(i, "ws1.L.YQ") < -0.2);
+  CHECK(csv.number(i, "ws1.L.YQ") > -0.8);
+  CHECK(csv.number(i, "ws1.L.Tgamma") > 1.5 * csv.number(i, "ws1.R.Tgamma"));
 }
 
 TEST_CASE("railsim run: bad scenario exits 2, numerical failure exits 3", "[engine][cli]") {
