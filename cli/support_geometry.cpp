@@ -34,24 +34,6 @@ void add_geometry_options(CLI::App& cmd, GeometryOptions& o) {
   cmd.add_flag("--no-cache", o.no_cache, "Always compute the table; do not read or write the cache");
 }
 
-double parse_inclination(const std::string& text) {
-  if (text == "none" || text == "0") return 0.0;
-  const auto slash = text.find('/');
-  char* end = nullptr;
-  if (slash != std::string::npos) {
-    const std::string a = text.substr(0, slash), b = text.substr(slash + 1);
-    const double num = std::strtod(a.c_str(), &end);
-    const bool ok_a = end != a.c_str() && *end == '\0';
-    const double den = std::strtod(b.c_str(), &end);
-    const bool ok_b = end != b.c_str() && *end == '\0';
-    if (ok_a && ok_b && num >= 0 && den > 0 && num / den <= 0.2) return std::atan(num / den);
-  } else {
-    const double v = std::strtod(text.c_str(), &end);
-    if (end != text.c_str() && *end == '\0' && v >= 0 && v <= 0.2) return std::atan(v);
-  }
-  throw InputError("--inclination '" + text + "': expected 1/N (e.g. 1/40, 1/20), a slope in [0, 0.2], or none");
-}
-
 GeometrySetup make_geometry(const GeometryOptions& o) {
   GeometrySetup g;
   contact::ProfileReadOptions wo, ro;
@@ -65,7 +47,7 @@ GeometrySetup make_geometry(const GeometryOptions& o) {
   ts.flange_back = o.flange_back;
   ts.back_face = o.back_face;
   ts.r0 = o.radius;
-  ts.inclination = parse_inclination(o.inclination);
+  ts.inclination = contact::parse_inclination(o.inclination, "--inclination");
   if (ts.inclination != 0.0 && g.rail->source().find("MBench_UIC60") != std::string::npos && g.rail->source().find("upright") == std::string::npos)
     spdlog::warn("rail profile {} is already canted 1/40; with --inclination {} it is canted twice", g.rail->source(),
                  o.inclination);

@@ -29,9 +29,6 @@ struct GeometryOptions {
 
 void add_geometry_options(CLI::App& cmd, GeometryOptions& o);
 
-// "1/40" -> atan(1/40); "none" or "0" -> 0; a plain number is a slope. InputError otherwise.
-double parse_inclination(const std::string& text);
-
 struct GeometrySetup {
   std::unique_ptr<contact::Profile> wheel, rail;
   std::unique_ptr<contact::WheelRailGeometry> geometry;

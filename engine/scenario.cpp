@@ -1,13 +1,16 @@
 // Scenario YAML reader; see scenario.hpp.
 #include "engine/scenario.hpp"
 
+#include <cmath>
 #include <filesystem>
 
+#include "contact/geometry/wheel_rail_geometry.hpp"
 #include "contact/hertz.hpp"
 #include "contact/reduction.hpp"
 #include "core/errors.hpp"
 #include "engine/conical_geometry.hpp"
 #include "engine/geometry_table.hpp"
+#include "engine/profile_geometry.hpp"
 #include "engine/system.hpp"
 #include "engine/track_input.hpp"
 #include "engine/vehicle_file.hpp"
@@ -24,7 +27,8 @@ std::string resolve(const std::string& base, const std::string& p) {
   return (fs::path(base) / p).lexically_normal().string();
 }
 
-std::shared_ptr<const ContactGeometry> load_geometry(const InputNode& g, const std::string& base) {
+std::shared_ptr<const ContactGeometry> load_geometry(const InputNode& g, const std::string& base,
+                                                     const contact::Material& material) {
   const std::string type = g.string("type");
   if (type == "conical") {
     g.allow_only({"type", "r0", "conicity", "l0", "contact_angle", "flange_clearance", "flange_stiffness",
@@ -50,7 +54,36 @@ std::shared_ptr<const ContactGeometry> load_geometry(const InputNode& g, const s
     g.allow_only({"type", "file"});
     return std::make_shared<GeometryTable>(resolve(base, g.string("file")));
   }
-  g.at("type").fail("expected 'conical' or 'table' (got '" + type + "')");
+  if (type == "profiles") {
+    g.allow_only({"type", "wheel", "rail", "inclination", "gauge", "gauge_depth", "flange_back", "back_face", "r0",
+                  "max_shift", "step", "cache_dir"});
+    ProfileGeometryParams p;
+    auto profile = [&](const char* key, const std::string& fallback) {
+      if (!g.has(key)) return fallback;
+      const std::string v = g.string(key);
+      // A file relative to the scenario, or a shipped profile name.
+      const std::string path = resolve(base, v);
+      return fs::exists(path) ? path : v;
+    };
+    p.wheel = profile("wheel", p.wheel);
+    p.rail = profile("rail", p.rail);
+    if (g.has("inclination")) {
+      const InputNode n = g.at("inclination");
+      p.setup.inclination = contact::parse_inclination(n.as_string(), n.where() + ": key 'inclination'");
+    } else {
+      p.setup.inclination = std::atan(1.0 / 40.0);
+    }
+    if (g.has("gauge")) p.setup.gauge = g.in_range("gauge", 0.9, 1.8);
+    if (g.has("gauge_depth")) p.setup.gauge_depth = g.in_range("gauge_depth", 0.0, 0.03);
+    if (g.has("flange_back")) p.setup.flange_back = g.in_range("flange_back", 0.8, 1.8);
+    if (g.has("back_face")) p.setup.back_face = g.in_range("back_face", -0.2, 0.0);
+    if (g.has("r0")) p.setup.r0 = g.in_range("r0", 0.1, 1.5);
+    const double s_max = g.has("max_shift") ? g.in_range("max_shift", 0.002, 0.02) : 0.015;
+    p.grid = {-s_max, s_max, g.has("step") ? g.in_range("step", 1e-6, 1e-3) : 1e-4};
+    if (g.has("cache_dir")) p.cache_dir = resolve(base, g.string("cache_dir"));
+    return std::make_shared<ProfileGeometry>(p, material);
+  }
+  g.at("type").fail("expected 'conical', 'table' or 'profiles' (got '" + type + "')");
 }
 
 CriticalSpeedSettings load_critical_speed_settings(const InputNode& n) {
@@ -129,14 +162,7 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
   const InputNode c = root.at("contact");
   c.allow_only({"geometry", "tangential", "saturation", "material", "reduction", "creep_coefficients", "patch",
                 "spin", "static_approach"});
-  auto geo = load_geometry(c.at("geometry"), base);
-  sc.geometry_description = geo->describe();
-  for (auto& w : m.wheelsets) w.geometry = geo;
   CouplingOptions co;
-  co.tangential = c.string_or("tangential", "coefficients");
-  co.saturation = c.string_or("saturation", "none");
-  if (co.saturation != "none" && co.saturation != "she")
-    c.at("saturation").fail("expected 'none' or 'she' (got '" + co.saturation + "')");
   if (auto mat = c.find("material")) {
     mat->allow_only({"E", "nu", "mu", "shear_modulus"});
     co.material.E = mat->has("E") ? mat->positive("E") : co.material.E;
@@ -144,6 +170,13 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
     co.material.mu = mat->has("mu") ? mat->in_range("mu", 0.0, 2.0, true) : co.material.mu;
     co.shear_modulus = mat->has("shear_modulus") ? mat->positive("shear_modulus") : 0.0;
   }
+  auto geo = load_geometry(c.at("geometry"), base, co.material);
+  sc.geometry_description = geo->describe();
+  for (auto& w : m.wheelsets) w.geometry = geo;
+  co.tangential = c.string_or("tangential", "coefficients");
+  co.saturation = c.string_or("saturation", "none");
+  if (co.saturation != "none" && co.saturation != "she")
+    c.at("saturation").fail("expected 'none' or 'she' (got '" + co.saturation + "')");
   if (auto r = c.find("reduction")) co.reduction = contact::parse_reduction(r->as_string(), r->where() + ": key 'reduction'");
   if (auto f = c.find("creep_coefficients")) {
     f->allow_only({"f11", "f22", "f23", "f33", "N_ref"});
@@ -161,7 +194,8 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
     co.N_ref = p->positive("N_ref");
   }
   if (auto sp = c.find("spin")) co.spin = sp->as_bool();
-  const bool table = c.at("geometry").string("type") == "table";
+  // Tabulated geometries (table file, profiles) carry their own patch at N0.
+  const bool table = c.at("geometry").string("type") != "conical";
   WheelContact c0;
   geo->evaluate(0.0, c0);
   const bool hertz = !table && c0.A > 0 && c0.B > 0;

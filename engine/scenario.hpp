@@ -15,6 +15,8 @@
 //     geometry: {type: conical, r0: 0.46, conicity: 0.2, l0: 0.75, contact_angle: 0,
 //                flange_clearance: 0.009, flange_stiffness: 1.5e7, max_shift: 0.05}
 //             | {type: table, file: ../vehicles/contact_tables/RSGEO_S1002_UIC60_1in40.dat}
+//             | {type: profiles, wheel: S1002, rail: UIC60, inclination: 1/40, gauge: 1.435,
+//                flange_back: 1.36, r0: 0.46, max_shift: 0.015, step: 1e-4}   # engine/profile_geometry.hpp
 //     tangential: coefficients | <contact registry name>
 //     saturation: none | she            # coefficients only
 //     material: {E: 2.1e11, nu: 0.28, mu: 0.3, shear_modulus: 8.2e10}

@@ -32,6 +32,24 @@ double curvature(const CurvePoint& c) {
 }
 }  // namespace
 
+double parse_inclination(const std::string& text, const std::string& where) {
+  if (text == "none" || text == "0") return 0.0;
+  const auto slash = text.find('/');
+  char* end = nullptr;
+  if (slash != std::string::npos) {
+    const std::string a = text.substr(0, slash), b = text.substr(slash + 1);
+    const double num = std::strtod(a.c_str(), &end);
+    const bool ok_a = end != a.c_str() && *end == '\0';
+    const double den = std::strtod(b.c_str(), &end);
+    const bool ok_b = end != b.c_str() && *end == '\0';
+    if (ok_a && ok_b && num >= 0 && den > 0 && num / den <= 0.2) return std::atan(num / den);
+  } else {
+    const double v = std::strtod(text.c_str(), &end);
+    if (end != text.c_str() && *end == '\0' && v >= 0 && v <= 0.2) return std::atan(v);
+  }
+  throw InputError(where + " '" + text + "': expected 1/N (e.g. 1/40, 1/20), a slope in [0, 0.2], or none");
+}
+
 void TrackSetup::validate() const {
   auto check = [](double v, double lo, double hi, const char* name, const char* unit) {
     if (!(std::isfinite(v) && v >= lo && v <= hi))

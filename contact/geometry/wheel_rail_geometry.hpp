@@ -34,6 +34,7 @@
 #pragma once
 
 #include <array>
+#include <string>
 #include <vector>
 
 #include "contact/geometry/profile.hpp"
@@ -52,6 +53,10 @@ struct TrackSetup {
   // Throws InputError naming the field and its allowed range.
   void validate() const;
 };
+
+// Rail inclination as text: "1/40" -> atan(1/40); "none" or "0" -> 0; a plain
+// number is a slope in [0, 0.2]. InputError naming `where` otherwise.
+double parse_inclination(const std::string& text, const std::string& where);
 
 struct SearchOptions {
   double second_gap_max = 1.0e-4;  // [m] report extra local minima with gap below this

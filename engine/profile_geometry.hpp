@@ -1,0 +1,57 @@
+// Contact geometry of real wheel and rail profiles for the engine: railsim's
+// own rigid contact search (contact/geometry/wheel_rail_geometry.hpp) tabulated
+// versus lateral shift (contact/geometry/contact_table.hpp, cached on disk),
+// seen through the engine's one-wheel interface (engine/contact_geometry.hpp).
+//
+// The table is solved for the whole wheelset (both wheels, wheelset roll that
+// keeps both on their rails, zero yaw). The engine uses it symmetrically: for
+// a shift s toward a wheel it reads the LEFT wheel's entry at y = s (profiles,
+// track set-up and placement are mirror-symmetric). Per point: rolling radius,
+// contact angle (> 0 tilts the normal toward the track centre; the table's sign
+// for the left wheel), lateral distance of the point from the wheelset centre,
+// relative curvatures A, B, and the Hertz patch (a along the rolling direction,
+// from A; Hertz 1882, via contact/hertz.hpp) and approach at the reference load
+// N0 = 50 kN; the engine scales them as N^(1/3) and N^(2/3), exactly Hertz for
+// fixed curvatures. Kalker's coefficients follow from a/b in the coupling.
+// Only the main (touching) point is used: two-point contact is reported by
+// `railsim geometry` but not yet coupled (one point per wheel).
+// Units SI (m, rad, 1/m, N).
+#pragma once
+
+#include <string>
+
+#include "contact/geometry/contact_table.hpp"
+#include "contact/types.hpp"
+#include "engine/contact_geometry.hpp"
+
+namespace railsim::engine {
+
+struct ProfileGeometryParams {
+  std::string wheel = "S1002";   // profile file or shipped name
+  std::string rail = "UIC60";
+  contact::TrackSetup setup;     // gauge, flange back, r0, inclination
+  contact::TableGrid grid{-0.015, 0.015, 1e-4};
+  std::string cache_dir;         // empty: the default contact-table cache folder
+};
+
+class ProfileGeometry final : public ContactGeometry {
+ public:
+  static constexpr double kReferenceLoad = 5.0e4;  // N0 of the tabulated Hertz patch [N]
+
+  // Builds (or loads from the cache) the contact table. InputError for bad
+  // profiles or set-up.
+  ProfileGeometry(const ProfileGeometryParams& params, const contact::Material& material);
+  void evaluate(double s, WheelContact& out) const override;
+  double r0() const override { return r0_; }
+  double l0() const override { return l0_; }
+  double max_shift() const override { return s_max_; }
+  std::string describe() const override { return description_; }
+
+ private:
+  contact::ContactTable table_;
+  contact::Material material_;
+  double r0_ = 0.0, l0_ = 0.0, s_max_ = 0.0;
+  std::string description_;
+};
+
+}  // namespace railsim::engine
