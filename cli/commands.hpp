@@ -19,6 +19,7 @@ void register_version(CLI::App& app, CommandRunner& run);
 void register_run(CLI::App& app, CommandRunner& run);
 void register_critical_speed(CLI::App& app, CommandRunner& run);
 void register_contact(CLI::App& app, CommandRunner& run);
+void register_compare_contact(CLI::App& app, CommandRunner& run);
 void register_demo(CLI::App& app, CommandRunner& run);
 void register_geometry(CLI::App& app, CommandRunner& run);
 void register_conicity(CLI::App& app, CommandRunner& run);

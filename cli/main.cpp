@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   railsim::cli::register_run(app, run);
   railsim::cli::register_critical_speed(app, run);
   railsim::cli::register_contact(app, run);
+  railsim::cli::register_compare_contact(app, run);
   railsim::cli::register_demo(app, run);
   railsim::cli::register_geometry(app, run);
   railsim::cli::register_conicity(app, run);

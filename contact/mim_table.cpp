@@ -517,12 +517,16 @@ std::string mim_table_cache_dir(const std::string& configured) {
   return dir;
 }
 
+std::string mim_table_cache_path(const MimTableSpec& spec, const std::string& configured_cache_dir) {
+  char name[64];
+  std::snprintf(name, sizeof name, "mim_table_%016llx.bin", static_cast<unsigned long long>(spec.hash()));
+  return mim_table_cache_dir(configured_cache_dir) + "/" + name;
+}
+
 std::shared_ptr<const MimTable> load_or_build_mim_table(const MimTableSpec& spec, const std::string& cache_dir,
                                                         const std::function<void(const std::string&)>& log) {
   spec.check();
-  char name[64];
-  std::snprintf(name, sizeof name, "mim_table_%016llx.bin", static_cast<unsigned long long>(spec.hash()));
-  const std::string path = mim_table_cache_dir(cache_dir) + "/" + name;
+  const std::string path = mim_table_cache_path(spec, cache_dir);
   if (std::filesystem::exists(path)) {
     try {
       return MimTable::load(path, spec);

@@ -106,6 +106,8 @@ void mim_table_reference(const MimTableSpec& spec, double aob, double xi_n, doub
 // The cache folder: `configured` if not empty, else $RAILSIM_CACHE_DIR, else
 // $XDG_CACHE_HOME/railsim, else $HOME/.cache/railsim (created when missing).
 std::string mim_table_cache_dir(const std::string& configured);
+// The file that holds the table for `spec` in that cache folder (it may not exist).
+std::string mim_table_cache_path(const MimTableSpec& spec, const std::string& configured_cache_dir);
 
 class MimTableModel final : public TangentialModel {
  public:

@@ -46,6 +46,7 @@ bool draw(const Chart& chart, const std::string& png_path) {
     js.set("color", s.color);
     js.set("x", numbers(s.x));
     js.set("y", numbers(s.y));
+    js.set("panel", s.panel);
     series.push(js);
   }
   spec.set("series", series);
@@ -60,14 +61,20 @@ bool draw(const Chart& chart, const std::string& png_path) {
   }
   spec.set("lines", lines);
   Json ann = Json::array();
-  for (const auto& a : chart.annotations) {
+  for (std::size_t i = 0; i < chart.annotations.size(); ++i) {
+    const auto& a = chart.annotations[i];
     Json ja = Json::object();
     ja.set("text", a.first);
     ja.set("x", a.second.first);
     ja.set("y", a.second.second);
+    ja.set("panel", i < chart.annotation_panels.size() ? chart.annotation_panels[i] : 0);
     ann.push(ja);
   }
   spec.set("annotations", ann);
+  Json panels = Json::array();
+  for (const auto& p : chart.panels) panels.push(p);
+  spec.set("panels", panels);
+  spec.set("panel_columns", chart.panel_columns);
   const std::string spec_path = png_path + ".json";
   spec.write_file(spec_path);
 

@@ -5,6 +5,11 @@
 // and runs results/plots/render_chart.py with the system python3. Rendering
 // problems (python3 or matplotlib missing) are reported, never fatal: the
 // numbers are already in the CSV files.
+//
+// Small multiples: when `panels` is not empty the figure is a grid of
+// sub-plots with shared axes, one per panel title; each series goes to the
+// panel with its index (`ChartSeries::panel`), reference lines and the axis
+// scales apply to every panel, annotations to the panel they name.
 #pragma once
 
 #include <string>
@@ -15,8 +20,9 @@ namespace railsim::results {
 struct ChartSeries {
   std::string label;
   std::vector<double> x, y;
-  std::string style = "line";  // "line", "markers", "line+markers", "step"
+  std::string style = "line";  // "line", "markers", "crosses", "line+markers", "step"
   std::string color;           // matplotlib colour; empty = automatic
+  int panel = 0;               // sub-plot index when Chart::panels is used
 };
 
 struct ChartLine {
@@ -33,6 +39,11 @@ struct Chart {
   std::vector<ChartLine> lines;
   // Optional annotated points (e.g. model names on a Pareto chart).
   std::vector<std::pair<std::string, std::pair<double, double>>> annotations;
+  // Panel of each annotation (same order; missing entries = panel 0).
+  std::vector<int> annotation_panels;
+  // Small multiples: one sub-plot per title (empty = a single plot).
+  std::vector<std::string> panels;
+  int panel_columns = 0;  // columns of the panel grid; 0 = about square
 };
 
 // Render `chart` to `png_path` (also writes png_path + ".json"). Returns true

@@ -1,6 +1,11 @@
 #!/usr/bin/env python3
-"""Render a railsim chart description (JSON written by results/chart.cpp) to PNG."""
+"""Render a railsim chart description (JSON written by results/chart.cpp) to PNG.
+
+A single plot, or with a non-empty "panels" list a grid of sub-plots with
+shared axes (small multiples): each series and annotation names its panel.
+"""
 import json
+import math
 import sys
 
 import matplotlib
@@ -9,25 +14,26 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 
-def main(path):
-    with open(path) as f:
-        spec = json.load(f)
-    fig, ax = plt.subplots(figsize=(8, 5), dpi=110)
-    for s in spec["series"]:
-        kw = {"label": s["label"] or None}
-        if s.get("color"):
-            kw["color"] = s["color"]
-        x = [float("nan") if v is None else v for v in s["x"]]
-        y = [float("nan") if v is None else v for v in s["y"]]
-        style = s.get("style", "line")
-        if style == "markers":
-            ax.plot(x, y, "o", **kw)
-        elif style == "line+markers":
-            ax.plot(x, y, "-o", markersize=4, **kw)
-        elif style == "step":
-            ax.step(x, y, where="post", **kw)
-        else:
-            ax.plot(x, y, "-", **kw)
+def plot_series(ax, s):
+    kw = {"label": s["label"] or None}
+    if s.get("color"):
+        kw["color"] = s["color"]
+    x = [float("nan") if v is None else v for v in s["x"]]
+    y = [float("nan") if v is None else v for v in s["y"]]
+    style = s.get("style", "line")
+    if style == "markers":
+        ax.plot(x, y, "o", **kw)
+    elif style == "crosses":
+        ax.plot(x, y, "x", markersize=6, **kw)
+    elif style == "line+markers":
+        ax.plot(x, y, "-o", markersize=4, **kw)
+    elif style == "step":
+        ax.step(x, y, where="post", **kw)
+    else:
+        ax.plot(x, y, "-", **kw)
+
+
+def decorate(ax, spec):
     for line in spec.get("lines", []):
         kw = {"color": line.get("color") or "k", "linestyle": "--", "linewidth": 1,
               "label": line.get("label") or None}
@@ -35,19 +41,93 @@ def main(path):
             ax.axvline(line["value"], **kw)
         else:
             ax.axhline(line["value"], **kw)
-    for a in spec.get("annotations", []):
-        ax.annotate(a["text"], (a["x"], a["y"]), textcoords="offset points", xytext=(5, 5), fontsize=8)
     if spec.get("logx"):
         ax.set_xscale("log")
     if spec.get("logy"):
         ax.set_yscale("log")
+    ax.grid(True, which="both", alpha=0.3)
+
+
+def annotate(fig, ax, annotations):
+    """Label points; a label that would overlap an earlier one moves up (in points)."""
+    fig.canvas.draw()  # fixes the axis limits and the data-to-display transform
+    placed = []  # (x, y) of label anchors in display pixels
+    px_per_pt = fig.dpi / 72.0
+    for a in annotations:
+        if a["x"] is None or a["y"] is None:
+            continue
+        x, y = ax.transData.transform((a["x"], a["y"]))
+        dy = 5
+        width = 6.5 * len(a["text"]) * px_per_pt  # rough text width at fontsize 8
+        while any(abs(x - px) < width and abs(y + dy * px_per_pt - py) < 9 * px_per_pt for px, py in placed):
+            dy += 9
+        placed.append((x, y + dy * px_per_pt))
+        arrow = {"arrowstyle": "-", "lw": 0.5, "color": "0.5"} if dy > 5 else None
+        ax.annotate(a["text"], (a["x"], a["y"]), textcoords="offset points", xytext=(5, dy), fontsize=8,
+                    arrowprops=arrow)
+
+
+def single(spec):
+    fig, ax = plt.subplots(figsize=(8, 5), dpi=110)
+    for s in spec["series"]:
+        plot_series(ax, s)
+    decorate(ax, spec)
+    annotate(fig, ax, spec.get("annotations", []))
     ax.set_title(spec.get("title", ""))
     ax.set_xlabel(spec.get("xlabel", ""))
     ax.set_ylabel(spec.get("ylabel", ""))
-    ax.grid(True, which="both", alpha=0.3)
     if any(s["label"] for s in spec["series"]) or any(l.get("label") for l in spec.get("lines", [])):
         ax.legend(fontsize=8)
-    fig.tight_layout()
+    return fig
+
+
+def multiples(spec):
+    titles = spec["panels"]
+    n = len(titles)
+    ncols = spec.get("panel_columns") or math.ceil(math.sqrt(n))
+    nrows = math.ceil(n / ncols)
+    fig, axes = plt.subplots(nrows, ncols, figsize=(3.2 * ncols + 1, 2.7 * nrows + 1), dpi=110,
+                             sharex=True, sharey=True, squeeze=False)
+    flat = [ax for row in axes for ax in row]
+    for i, ax in enumerate(flat):
+        if i >= n:
+            ax.set_visible(False)
+            continue
+        ax.set_title(titles[i], fontsize=9)
+        decorate(ax, spec)
+    for s in spec["series"]:
+        p = s.get("panel", 0)
+        if 0 <= p < n:
+            plot_series(flat[p], s)
+    for a in spec.get("annotations", []):
+        p = a.get("panel", 0)
+        if 0 <= p < n:
+            flat[p].annotate(a["text"], (a["x"], a["y"]), textcoords="offset points", xytext=(3, 3), fontsize=7)
+    fig.suptitle(spec.get("title", ""))
+    fig.supxlabel(spec.get("xlabel", ""))
+    fig.supylabel(spec.get("ylabel", ""))
+    # One legend for the figure: the first occurrence of every label.
+    handles, labels = [], []
+    for ax in flat[:n]:
+        for h, l in zip(*ax.get_legend_handles_labels()):
+            if l not in labels:
+                handles.append(h)
+                labels.append(l)
+    if labels:
+        fig.legend(handles, labels, loc="upper center", bbox_to_anchor=(0.5, 0.955), ncol=min(len(labels), 4),
+                   fontsize=8, frameon=False)
+    fig.tight_layout(rect=(0, 0, 1, 0.93 if labels else 0.97))
+    return fig
+
+
+def main(path):
+    with open(path) as f:
+        spec = json.load(f)
+    if spec.get("panels"):
+        fig = multiples(spec)
+    else:
+        fig = single(spec)
+        fig.tight_layout()
     fig.savefig(spec["output"])
     return 0
 

@@ -3,6 +3,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <string>
 
 #include "results/chart.hpp"
 #include "test_support.hpp"
@@ -25,4 +27,27 @@ TEST_CASE("a chart renders to a PNG file next to its JSON description", "[result
   CHECK(std::string(sig + 1, 3) == "PNG");
   CHECK(std::filesystem::file_size(png) > 5000);
   CHECK(std::filesystem::exists(png + ".json"));
+}
+
+TEST_CASE("a chart with panels renders small multiples", "[results][chart]") {
+  const std::string dir = railsim::test::temp_dir("chart_panels");
+  Chart c;
+  c.title = "failure map";
+  c.xlabel = "creepage [-]";
+  c.ylabel = "spin [1/m]";
+  c.logx = true;
+  c.panels = {"model a", "model b", "model c"};
+  for (int p = 0; p < 3; ++p) {
+    c.series.push_back({p == 0 ? "ok" : "", {1e-4, 1e-3}, {0.0, 1.0}, "markers", "tab:green", p});
+    c.series.push_back({p == 0 ? "failed" : "", {1e-2}, {2.0}, "crosses", "tab:red", p});
+  }
+  c.annotations.push_back({"note", {1e-3, 1.0}});
+  c.annotation_panels.push_back(2);
+  const std::string png = dir + "/m.png";
+  REQUIRE(draw(c, png));
+  CHECK(std::filesystem::file_size(png) > 5000);
+  std::ifstream j(png + ".json");
+  const std::string json((std::istreambuf_iterator<char>(j)), std::istreambuf_iterator<char>());
+  CHECK(json.find("\"panels\"") != std::string::npos);
+  CHECK(json.find("\"panel\": 2") != std::string::npos);
 }
