@@ -5,6 +5,8 @@
 #include <array>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -20,6 +22,12 @@ inline std::string shared_path(const std::string& rel) { return shared_dir() + "
 // tests/data folder (our own validation data files).
 inline std::string data_path(const std::string& rel) { return std::string(RAILSIM_TEST_DATA_DIR) + "/" + rel; }
 inline std::string source_path(const std::string& rel) { return std::string(RAILSIM_SOURCE_DIR) + "/" + rel; }
+
+// The whole content of a file (empty when it cannot be read).
+inline std::string read_text(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
+}
 
 struct RunResult {
   int exit_code = -1;

@@ -32,11 +32,6 @@ std::string write_file(const std::string& dir, const std::string& name, const st
   return path;
 }
 
-std::string read_text(const std::string& path) {
-  std::ifstream f(path);
-  return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
-}
-
 }  // namespace
 
 TEST_CASE("compare-contact: errors against MIM within the known bounds, files written", "[cli][compare_contact]") {
@@ -93,7 +88,7 @@ TEST_CASE("compare-contact: errors against MIM within the known bounds, files wr
   CHECK(fastsim_spin_max > 0.5);  // the comparison sees the simplified theory's error at all
   CHECK(fastrip_pure_max < fastsim_pure_max);  // strip theory is closer without spin
 
-  const std::string summary = read_text(out + "/summary.json");
+  const std::string summary = railsim::test::read_text(out + "/summary.json");
   CHECK(summary.find("\"pareto_front\": true") != std::string::npos);
   CHECK(summary.find("\"max_err_F_pct\"") != std::string::npos);
   CHECK(summary.find("\"failure_map\"") != std::string::npos);
@@ -145,7 +140,7 @@ TEST_CASE("compare-contact: bad input exits 2 naming file, line, key or option",
     INFO(skipped.output);
     CHECK(skipped.exit_code == 0);
     CHECK(skipped.output.find("mim_table not compared") != std::string::npos);
-    CHECK(read_text(dir + "/out2/comparison.csv").find("mim_table") == std::string::npos);
+    CHECK(railsim::test::read_text(dir + "/out2/comparison.csv").find("mim_table") == std::string::npos);
   }
   for (const auto& b : bad) {
     const auto r = run_railsim("compare-contact " + b.args + " --out '" + dir + "/out'");

@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -17,13 +18,6 @@
 using railsim::test::run_railsim;
 
 namespace {
-
-std::string read_all(const std::string& path) {
-  std::ifstream f(path);
-  std::stringstream ss;
-  ss << f.rdbuf();
-  return ss.str();
-}
 
 // The first number after "key": in a JSON text (NaN when absent or null).
 double json_number(const std::string& json, const std::string& key) {
@@ -44,7 +38,7 @@ TEST_CASE("railsim critical-speed: summary, charts and the reduction baseline", 
   const auto r = run_railsim("critical-speed '" + kScenario + "' --out '" + dir + "'" + kSweep + " --reduction 0.6");
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
-  const std::string s = read_all(dir + "/summary.json");
+  const std::string s = railsim::test::read_text(dir + "/summary.json");
   for (const char* key : {"critical_speed_kmh", "linear_critical_speed_kmh", "method", "contact_model", "reduction",
                           "unreduced", "critical_speed_change_percent", "settings"})
     CHECK(s.find(std::string("\"") + key + "\"") != std::string::npos);
@@ -74,7 +68,7 @@ TEST_CASE("railsim critical-speed: summary, charts and the reduction baseline", 
   std::set<std::string> keys;
   for (const auto& row : after.rows) keys.insert(row.front());
   CHECK(keys.size() == after.rows.size());
-  CHECK(json_number(read_all(dir + "/summary.json"), "critical_speed_kmh") == v);
+  CHECK(json_number(railsim::test::read_text(dir + "/summary.json"), "critical_speed_kmh") == v);
 }
 
 TEST_CASE("railsim critical-speed --method ramping writes the ramp record", "[cli][critical_speed]") {
@@ -82,7 +76,7 @@ TEST_CASE("railsim critical-speed --method ramping writes the ramp record", "[cl
   const auto r = run_railsim("critical-speed '" + kScenario + "' --method ramping --v-min 140 --v-max 185 --deceleration 0.5 --out '" + dir + "'");
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
-  const std::string s = read_all(dir + "/summary.json");
+  const std::string s = railsim::test::read_text(dir + "/summary.json");
   const double v = json_number(s, "critical_speed_kmh"), v_lin = json_number(s, "linear_critical_speed_kmh");
   // Ramping at 0.5 m/s^2 trails the eigenvalue answer by the decay time of the
   // transients: within 3 % below it (measured 1.6 %).
@@ -111,7 +105,7 @@ TEST_CASE("railsim critical-speed rejects bad input with exit code 2", "[cli][cr
   CHECK(r.exit_code == 2);
 
   // A scenario whose critical_speed section has an unknown key and a bad range.
-  std::string text = read_all(kScenario);
+  std::string text = railsim::test::read_text(kScenario);
   text.replace(text.find("vehicle: ../../../"), 18, "vehicle: " + railsim::test::source_path(""));
   std::ofstream(dir + "/bad_key.yaml") << text << "critical_speed: {v_min_kmh: 100, v_maximum: 200}\n";
   r = run_railsim("critical-speed '" + dir + "/bad_key.yaml' --out '" + dir + "/o'");
@@ -123,3 +117,21 @@ TEST_CASE("railsim critical-speed rejects bad input with exit code 2", "[cli][cr
   CHECK(r.exit_code == 2);
   CHECK(r.output.find("v_min_kmh < v_max_kmh") != std::string::npos);
 }
+
+#ifdef RAILSIM_HAVE_MPI
+TEST_CASE("railsim critical-speed under mpirun -np 2 gives the thread run's sweep", "[cli][critical_speed][mpi]") {
+  const std::string dir = railsim::test::temp_dir("cli_cs_mpi");
+  const std::string sweep = " --v-min 150 --v-max 180 --v-step 5 --duration 6";
+  const auto thr = run_railsim("critical-speed '" + kScenario + "' --out '" + dir + "/threads'" + sweep);
+  REQUIRE(thr.exit_code == 0);
+  const std::string mpi = "mpirun --allow-run-as-root --oversubscribe -np 2 \"" + std::string(RAILSIM_BINARY) +
+                          "\" critical-speed '" + kScenario + "' --threads 1 --out '" + dir + "/mpi'" + sweep +
+                          " > '" + dir + "/mpi.log' 2>&1";
+  REQUIRE(std::system(mpi.c_str()) == 0);
+  // Same points, same values, same order; the part files of the ranks are merged away.
+  CHECK(railsim::test::read_text(dir + "/mpi/bifurcation.csv") == railsim::test::read_text(dir + "/threads/bifurcation.csv"));
+  CHECK_FALSE(std::filesystem::exists(dir + "/mpi/bifurcation.csv.part0"));
+  CHECK(json_number(railsim::test::read_text(dir + "/mpi/summary.json"), "critical_speed_kmh") ==
+        json_number(railsim::test::read_text(dir + "/threads/summary.json"), "critical_speed_kmh"));
+}
+#endif

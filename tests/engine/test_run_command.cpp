@@ -10,15 +10,6 @@
 
 using namespace railsim;
 
-namespace {
-std::string slurp(const std::string& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-}  // namespace
-
 TEST_CASE("railsim run writes channels and summary", "[engine][cli]") {
   const std::string out = test::temp_dir("run_single");
   const auto r = test::run_railsim("run " + test::source_path("scenarios/single_wheelset.yaml") + " --out " + out);
@@ -30,7 +21,7 @@ TEST_CASE("railsim run writes channels and summary", "[engine][cli]") {
   double maxy = 0;
   for (std::size_t i = 0; i < csv.rows.size(); ++i) maxy = std::max(maxy, std::abs(csv.number(i, "ws1.y")));
   CHECK(maxy > 0.005);
-  const std::string js = slurp(out + "/summary.json");
+  const std::string js = test::read_text(out + "/summary.json");
   CHECK(js.find("\"status\": \"ok\"") != std::string::npos);
   CHECK(js.find("\"rhs_calls\"") != std::string::npos);
   CHECK(js.find("\"real_time_factor\"") != std::string::npos);
@@ -46,7 +37,7 @@ TEST_CASE("railsim run: running safety and curving of the coach in the R 300 m c
       test::run_railsim("run " + test::source_path("scenarios/manchester_coach_curve_R300.yaml") + " --out " + out);
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
-  const std::string js = slurp(out + "/summary.json");
+  const std::string js = test::read_text(out + "/summary.json");
   for (const char* key : {"\"running_safety\"", "\"nadal_limit\"", "\"flange_angle_deg\"", "\"yq_instantaneous\"",
                           "\"yq_2m\"", "\"sum_y_2m\"", "\"wheel_unloading\"", "\"en14363_pass\"", "\"curving\"",
                           "\"angle_of_attack_mrad\"", "\"Tgamma\"", "\"sum_Y_expected_M_a_nc\""})
@@ -78,5 +69,5 @@ TEST_CASE("railsim run: bad scenario exits 2, numerical failure exits 3", "[engi
   INFO(r.output);
   CHECK(r.exit_code == 3);
   CHECK(r.output.find("exceeds the admissible") != std::string::npos);
-  CHECK(slurp(out + "/summary.json").find("\"status\": \"failed\"") != std::string::npos);
+  CHECK(test::read_text(out + "/summary.json").find("\"status\": \"failed\"") != std::string::npos);
 }

@@ -28,11 +28,6 @@ std::vector<double> point_value(const SweepPoint& p) {
   return {acc, p.params[0] * p.params[0]};
 }
 
-std::string read_all(const std::string& path) {
-  std::ifstream f(path);
-  return std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
-}
-
 struct Interrupted : std::runtime_error {
   Interrupted() : std::runtime_error("interrupted") {}
 };
@@ -48,7 +43,7 @@ TEST_CASE("one and two worker threads write identical sweep files", "[sweep]") {
   o.threads = 2;
   const auto r2 = run_sweep(pts, point_value, o);
   REQUIRE(r1.size() == 12);
-  CHECK(read_all(dir + "/one.csv") == read_all(dir + "/two.csv"));
+  CHECK(railsim::test::read_text(dir + "/one.csv") == railsim::test::read_text(dir + "/two.csv"));
   CHECK_FALSE(std::filesystem::exists(dir + "/two.csv.part0"));
 }
 
@@ -82,12 +77,12 @@ TEST_CASE("an interrupted sweep resumes with all points and no duplicates", "[sw
     CHECK(all[i].values == point_value(pts[i]));
   }
   // The merged file has a header and exactly one line per point.
-  const std::string text = read_all(o.output);
+  const std::string text = railsim::test::read_text(o.output);
   CHECK(std::count(text.begin(), text.end(), '\n') == 11);
   // A clean run gives the same file.
   SweepOptions clean{dir + "/clean.csv", {"a", "b"}, 2};
   run_sweep(pts, point_value, clean);
-  CHECK(read_all(clean.output) == text);
+  CHECK(railsim::test::read_text(clean.output) == text);
 }
 
 #ifdef RAILSIM_HAVE_MPI
@@ -98,7 +93,7 @@ TEST_CASE("MPI with two ranks writes the same sweep file as threads", "[sweep][m
   const std::string thr = "\"" + probe + "\" " + dir + "/threads.csv";
   REQUIRE(std::system((mpi + " > " + dir + "/mpi.log 2>&1").c_str()) == 0);
   REQUIRE(std::system((thr + " > " + dir + "/thr.log 2>&1").c_str()) == 0);
-  const std::string a = read_all(dir + "/mpi.csv"), b = read_all(dir + "/threads.csv");
+  const std::string a = railsim::test::read_text(dir + "/mpi.csv"), b = railsim::test::read_text(dir + "/threads.csv");
   CHECK(!a.empty());
   CHECK(a == b);
 }
