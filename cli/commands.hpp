@@ -18,6 +18,7 @@ using CommandRunner = std::function<int()>;
 void register_version(CLI::App& app, CommandRunner& run);
 void register_run(CLI::App& app, CommandRunner& run);
 void register_critical_speed(CLI::App& app, CommandRunner& run);
+void register_modes(CLI::App& app, CommandRunner& run);
 void register_contact(CLI::App& app, CommandRunner& run);
 void register_compare_contact(CLI::App& app, CommandRunner& run);
 void register_demo(CLI::App& app, CommandRunner& run);

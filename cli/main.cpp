@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   railsim::cli::register_version(app, run);
   railsim::cli::register_run(app, run);
   railsim::cli::register_critical_speed(app, run);
+  railsim::cli::register_modes(app, run);
   railsim::cli::register_contact(app, run);
   railsim::cli::register_compare_contact(app, run);
   railsim::cli::register_demo(app, run);

@@ -1,0 +1,112 @@
+// `railsim modes SCENARIO.yaml --out DIR [--v-min 20 --v-max 400 --v-step 10] [--count 6]`:
+// linear stability of the scenario's vehicle versus speed (engine/linearisation.hpp):
+// the eigenvalues of the linearised equations about centred running on
+// perfect track at each speed, s = sigma + i omega, frequency f = omega/2pi and
+// damping ratio zeta = -sigma/|s|. Writes DIR/modes.csv (speed, rank of the
+// mode by decreasing real part, f, zeta, sigma, omega for the `count` least
+// damped oscillatory modes), DIR/modes.png (zeta against speed; the
+// linear critical speed is where the least damped mode reaches zeta = 0),
+// DIR/modes_frequency.png and
+// prints the linear critical speed. Modes are ranked per speed, not tracked
+// across speeds: where two modes cross, their ranks swap.
+#include <spdlog/spdlog.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+#include "cli/commands.hpp"
+#include "core/errors.hpp"
+#include "engine/analysis/critical_speed.hpp"
+#include "engine/linearisation.hpp"
+#include "engine/scenario.hpp"
+#include "results/chart.hpp"
+#include "results/csv_writer.hpp"
+
+namespace railsim::cli {
+
+namespace {
+
+struct ModesArgs {
+  std::string scenario;
+  std::string out = "modes";
+  double v_min_kmh = 20, v_max_kmh = 400, v_step_kmh = 10;
+  int count = 6;
+};
+
+int run_modes(const ModesArgs& a) {
+  if (!(a.v_min_kmh > 0 && a.v_max_kmh > a.v_min_kmh))
+    throw InputError("--v-min/--v-max: need 0 < v-min < v-max (got " + std::to_string(a.v_min_kmh) + ", " +
+                     std::to_string(a.v_max_kmh) + ")");
+  if (!(a.v_step_kmh > 0)) throw InputError("--v-step: expected a positive number");
+  const engine::Scenario sc = engine::load_scenario(a.scenario);
+  std::error_code ec;
+  std::filesystem::create_directories(a.out, ec);
+  if (ec) throw InputError("--out " + a.out + ": cannot create the folder (" + ec.message() + ")");
+
+  results::CsvWriter csv(a.out + "/modes.csv",
+                         {"speed_kmh", "rank", "frequency_hz", "damping_ratio", "real_1_s", "imag_rad_s"});
+  results::Chart chart;
+  chart.title = "Modes versus speed: " + sc.name;
+  chart.xlabel = "speed [km/h]";
+  chart.ylabel = "damping ratio [-]";
+  results::Chart fchart = chart;
+  fchart.title = "Mode frequencies versus speed: " + sc.name;
+  fchart.ylabel = "frequency [Hz]";
+  std::vector<results::ChartSeries> zeta(static_cast<std::size_t>(a.count)), freq(zeta.size());
+  for (int k = 0; k < a.count; ++k) {
+    const std::string label = k == 0 ? "least damped" : "rank " + std::to_string(k + 1);
+    zeta[k] = {label, {}, {}, "markers", "", 0};
+    freq[k] = {label, {}, {}, "markers", "", 0};
+  }
+  const int n = static_cast<int>(std::floor((a.v_max_kmh - a.v_min_kmh) / a.v_step_kmh + 1e-9)) + 1;
+  for (int i = 0; i < n; ++i) {
+    const double v_kmh = a.v_min_kmh + i * a.v_step_kmh;
+    engine::Model m = sc.model;
+    m.speed.v0 = v_kmh / 3.6;
+    m.speed.accel = 0.0;
+    const auto md = engine::modes(m, Eigen::VectorXd::Zero(m.n_states), true);
+    for (int k = 0; k < a.count && k < static_cast<int>(md.size()); ++k) {
+      const auto& mode = md[static_cast<std::size_t>(k)];
+      csv.cell(v_kmh).cell(k + 1).cell(mode.frequency).cell(mode.damping_ratio).cell(mode.eigenvalue.real())
+          .cell(mode.eigenvalue.imag()).end_row();
+      zeta[k].x.push_back(v_kmh), zeta[k].y.push_back(mode.damping_ratio);
+      freq[k].x.push_back(v_kmh), freq[k].y.push_back(mode.frequency);
+    }
+  }
+  csv.flush();
+  const double v_lin = engine::linear_critical_speed(sc, a.v_min_kmh / 3.6, a.v_max_kmh / 3.6);
+  for (int k = 0; k < a.count; ++k) chart.series.push_back(zeta[k]), fchart.series.push_back(freq[k]);
+  if (!std::isnan(v_lin)) {
+    chart.lines.push_back({v_lin * 3.6, "linear critical speed", "r", true});
+    fchart.lines.push_back({v_lin * 3.6, "linear critical speed", "r", true});
+  }
+  chart.lines.push_back({0.0, "zero damping", "0.5", false});
+  results::draw(chart, a.out + "/modes.png");
+  results::draw(fchart, a.out + "/modes_frequency.png");
+  if (std::isnan(v_lin))
+    std::printf("linear critical speed: none in %.0f..%.0f km/h (stable throughout)\n", a.v_min_kmh, a.v_max_kmh);
+  else
+    std::printf("linear critical speed: %.1f km/h\n", v_lin * 3.6);
+  std::printf("wrote %s/modes.csv, modes.png, modes_frequency.png (%d speeds)\n", a.out.c_str(), n);
+  return kExitSuccess;
+}
+
+}  // namespace
+
+void register_modes(CLI::App& app, CommandRunner& run) {
+  auto a = std::make_shared<ModesArgs>();
+  auto* cmd = app.add_subcommand("modes", "Eigenvalues of the linearised vehicle versus speed (damping, frequency)");
+  cmd->add_option("scenario", a->scenario, "Scenario YAML file")->required();
+  cmd->add_option("--out", a->out, "Output folder")->capture_default_str();
+  cmd->add_option("--v-min", a->v_min_kmh, "Lowest speed [km/h]")->capture_default_str();
+  cmd->add_option("--v-max", a->v_max_kmh, "Highest speed [km/h]")->capture_default_str();
+  cmd->add_option("--v-step", a->v_step_kmh, "Speed step [km/h]")->capture_default_str();
+  cmd->add_option("--count", a->count, "Least damped oscillatory modes reported per speed")
+      ->check(CLI::Range(1, 50))
+      ->capture_default_str();
+  cmd->callback([a, &run] { run = [a] { return run_modes(*a); }; });
+}
+
+}  // namespace railsim::cli
