@@ -79,6 +79,11 @@ ContactForces Fastrip::solve(const ContactInput& in, TangentialWorkspace* /*ws*/
   const double W = std::hypot(wx, wy);
   const double ex = W > 0.0 ? -wx / W : 0.0;  // direction of the strip-theory traction
   const double ey = W > 0.0 ? -wy / W : 0.0;
+  // Creepage pull in the strips' slip zones (FASTSIM's flexibilities L1, L2,
+  // Kalker 1982): keeps the traction there along the total rigid slip when spin
+  // is added (see the header, step 4).
+  const double cx = in.creep.xi * 3.0 * G * C.C11 * k.k11 / (8.0 * a);
+  const double cy = in.creep.eta * 3.0 * G * C.C22 * k.k22 / (8.0 * a);
   const double spy = in.creep.phi / L3;   // lateral spin slip / L3 per metre of x
   const double spx = in.creep.phi / L3;   // longitudinal spin slip / L3 per metre of y
 
@@ -134,6 +139,10 @@ ContactForces Fastrip::solve(const ContactInput& in, TangentialWorkspace* /*ws*/
       // Spin, FASTSIM-like (step 4), on top of the strip traction; then the bound.
       sx += sgx * dx;
       sy -= spy * xm * dx;
+      if (W > 0.0 && x < d - ar) {  // the strip slides here: the creepage pulls as in FASTSIM
+        sx -= cx * dx;
+        sy -= cy * dx;
+      }
       double tx = q * ex + sx, ty = q * ey + sy;
       const double g = gj * sqc_[kk];
       const double t2 = tx * tx + ty * ty;

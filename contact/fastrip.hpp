@@ -35,12 +35,20 @@
 //    centres,  s <- s + (phi y_j, -phi x_mid) dx / L3,
 //    added to the strip-theory traction q e, and the total is returned
 //    radially onto the elliptic traction bound mu p when it exceeds it (the
-//    excess is removed from s). Without spin s stays zero and the strip
-//    solution is reproduced exactly; with pure spin the model is FASTSIM
-//    with the elliptic bound.
+//    excess is removed from s). In the strip's slip zone (behind its adhesion
+//    zone) the creepage also pulls, as in FASTSIM: s <- s - (xi/L1, eta/L2) dx
+//    with Kalker's L1 = 8a/(3 G C11 k11), L2 = 8a/(3 G C22 k22). Without it the
+//    saturated strip traction (capped at mu p) could not hold its direction
+//    against the accumulated spin traction, and creepage + spin near
+//    saturation lost up to 86 % of the force (73 % error against MIM); with
+//    pure creepage the pull is parallel to e and changes nothing. Without
+//    spin s stays zero and the strip solution is reproduced exactly; with pure
+//    spin the model is FASTSIM with the elliptic bound.
 //    (Tried and rejected: spin's longitudinal slip -phi y_j inside the strip
 //    theory, or a separate flexibility calibrated on C33. Against CONTACT's
-//    exact pure-spin curve both were worse than the single L3.)
+//    exact pure-spin curve both were worse than the single L3. Also the pull
+//    wherever the total traction slides, not only in the strip's slip zone:
+//    worse with longitudinal creepage + spin, 24 % against 16 %.)
 // 5. Integration: the strip-theory traction is integrated analytically over
 //    each element (force and first moment), the spin correction by the
 //    midpoint rule at element centres; strips by the midpoint rule. The
@@ -49,22 +57,15 @@
 //    slopes for xi, eta, phi (Fy) and the saturated force mu Fz are exact.
 //    Pure creepage without spin is then independent of the grid along x.
 //
-// Accuracy (measured, see tests/contact_fastsim): against CONTACT's exact
-// curves for a circle, pure creepage 1.0-1.6 % (FASTSIM 6-7 %); pure spin as
-// FASTSIM (12 % at 20 x 20). KNOWN WEAKNESS: creepage combined with spin. On
-// nine live-MIM cases (grid 40, a/b 0.5-2, xi/eta 0.5e-3-2e-3, phi 1-3 1/m)
-// the force error reached 23 % (xi 2e-3, eta 1e-3, phi 1.5 1/m: |F| too low)
-// where FASTSIM had 8 %: adding the spin traction on top of the strip solution
-// and returning the sum onto the bound loses force. The coupling of spin and
-// strip theory in Sichani's paper is presumably different; until it is
-// obtained, prefer fastsim (or mim_table) when spin and creepage combine.
-//
-// Units: SI (m, N, Pa, spin 1/m). Signs as contact/types.hpp: forces of the
-// rail on the wheel, positive creepage gives negative force; in the linear
-// limit Fx = -G c^2 C11 xi, Fy = -G c^2 C22 eta - G c^3 C23 phi exactly; the
-// moment slopes are approximate: eta -> Mz comes out as (4/(3 pi)) C22 (a/b)^(1/2)
-// instead of C23 (+7 % for a circle), phi -> Mz as FASTSIM's (-16 % on C33).
-// Only the elliptic (Hertz) pressure is supported (Carter's solution needs it).
+// Accuracy (measured, see tests/contact_fastsim and `railsim compare-contact
+// scenarios/compare_contact_cases.yaml`, MIM grid 60 as reference, error of the
+// force vector relative to |F_MIM|): pure creepage max 2.5 % (FASTSIM 6.0 %),
+// pure spin max 10.8 % (FASTSIM 11.3 %), creepage + spin max 16.2 %, mean 7.6 %
+// (FASTSIM 15.2 %, 6.6 %). KNOWN WEAKNESS: with creepage combined with spin
+// FaStrip is still not closer than FASTSIM (better on 3 of 12 combined cases):
+// the strip's adhesion zone ignores spin. The coupling of spin and strip
+// theory in Sichani's paper is presumably different; until it is obtained,
+// prefer fastsim (or mim_table) when spin and creepage combine.
 #pragma once
 
 #include <memory>

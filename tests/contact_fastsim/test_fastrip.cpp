@@ -173,12 +173,13 @@ TEST_CASE("FaStrip rejects bad input and is registered as fastrip", "[fastrip][i
 }
 
 TEST_CASE("FaStrip and FASTSIM with creepage combined with spin against the live MIM solver", "[fastrip]") {
-  // Documents a known weakness of our FaStrip-type coupling (fastrip.hpp):
-  // with longitudinal creepage and spin it loses force. Reference: the exact
-  // MIM solver, 30 elements across the patch. Measured errors |dF|/|F|:
-  //   xi 1e-3, phi 1 1/m:            fastsim 6 %, fastrip 11 %
-  //   xi 2e-3, eta 1e-3, phi 1.5 1/m: fastsim 7.5 %, fastrip 23 %
-  //   eta 1e-3, phi 1 1/m:           fastsim 6.5 %, fastrip 5.8 %
+  // Creepage combined with spin, where our FaStrip-type coupling is weakest
+  // (fastrip.hpp). Reference: the exact MIM solver, 30 elements across the
+  // patch. Measured errors |dF|/|F| (before the creepage pull in the slip
+  // zones fastrip had 11 %, 23 %, 5.8 %):
+  //   xi 1e-3, phi 1 1/m:            fastsim 5.9 %, fastrip 9.3 %
+  //   xi 2e-3, eta 1e-3, phi 1.5 1/m: fastsim 7.5 %, fastrip 6.9 %
+  //   eta 1e-3, phi 1 1/m:           fastsim 6.5 %, fastrip 3.9 %
   railsim::contact::mim::MimOptions o;
   o.grid = 30;
   o.tolerance = 1e-6;
@@ -191,8 +192,8 @@ TEST_CASE("FaStrip and FASTSIM with creepage combined with spin against the live
     Creepages c;
     double fs_max, fr_max;
   };
-  for (const Case& k : {Case{{1e-3, 0.0, 1.0}, 0.10, 0.15}, Case{{2e-3, 1e-3, 1.5}, 0.10, 0.27},
-                        Case{{0.0, 1e-3, 1.0}, 0.10, 0.10}}) {
+  for (const Case& k : {Case{{1e-3, 0.0, 1.0}, 0.10, 0.12}, Case{{2e-3, 1e-3, 1.5}, 0.10, 0.10},
+                        Case{{0.0, 1e-3, 1.0}, 0.10, 0.06}}) {
     const auto& r = mim.solve_hertz(p, k.c, m);
     ContactInput in;
     in.patch = p;
