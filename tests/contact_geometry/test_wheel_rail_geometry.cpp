@@ -64,7 +64,14 @@ TEST_CASE("Contact points match CONTACT's Manchester sweep (yaw0, A22)", "[geome
     worst_x = std::max(worst_x, std::abs(dx));
     worst_a = std::max(worst_a, std::abs(da));
     if (!test::excluded(row, "radius")) {
-      const double dr = (p.radius - row.pen / std::cos(row.delta)) - row.r_roll;
+      // CONTACT's rolling radius is the height of the contact point below the
+      // axle, r cos(theta), theta the angular position of the point ahead of the
+      // wheel's lowest point (x_w = r sin(theta) in wheelset axes; zero without yaw);
+      // ours is the wheel-circle radius r. Both with the approach along the normal.
+      const double yaw = -row.yaw, yws = -row.y_ws;
+      const double xw = std::cos(yaw) * p.x + std::sin(yaw) * (p.y - yws);
+      const double r_eff = p.radius * std::sqrt(1.0 - (xw / p.radius) * (xw / p.radius));
+      const double dr = (r_eff - row.pen / std::cos(row.delta)) - row.r_roll;
       CHECK(std::abs(dr) < 0.05e-3);
       worst_r = std::max(worst_r, std::abs(dr));
     }
