@@ -51,6 +51,8 @@ struct CriticalSpeedArgs {
   double large = NAN, small = NAN, threshold = NAN;  // mm
   double deceleration = NAN;                          // m/s^2
   bool up_branch = true;
+  bool continuation_on = false, continuation_off = false;  // neither: the scenario's setting
+  int continuation = -1;  // resolved: 0 off, 1 on
   int threads = 0;
   double ramp_start_kmh = 0.0, ramp_disturbance = 0.0;  // from the scenario only
 };
@@ -70,6 +72,7 @@ CriticalSpeedArgs resolve_settings(CriticalSpeedArgs a, const engine::CriticalSp
   pick(a.small, s.small_disturbance_mm);
   pick(a.threshold, s.threshold_mm);
   pick(a.deceleration, s.deceleration);
+  a.continuation = a.continuation_on ? 1 : a.continuation_off ? 0 : (s.continuation ? 1 : 0);
   a.ramp_start_kmh = range_given || s.ramp_start_kmh <= 0 ? a.v_max_kmh : s.ramp_start_kmh;
   a.ramp_disturbance = disturbance_given || s.ramp_disturbance_mm <= 0 ? a.large : s.ramp_disturbance_mm;
   return a;
@@ -104,6 +107,7 @@ Outcome analyse(const engine::Scenario& sc, const CriticalSpeedArgs& a, const st
     o.small_disturbance = a.small * 1e-3;
     o.threshold = a.threshold * 1e-3;
     o.up_branch = a.up_branch;
+    o.continuation = a.continuation == 1;
     o.threads = a.threads;
     o.use_mpi = true;
     const auto r = engine::bifurcation_sweep(sc, o, dir + "/bifurcation.csv");
@@ -185,6 +189,7 @@ void fill_summary(Json& s, const engine::Scenario& sc, const CriticalSpeedArgs& 
     set.set("large_disturbance_mm", a.large);
     set.set("small_disturbance_mm", a.small);
     set.set("up_branch", a.up_branch);
+    set.set("continuation", a.continuation == 1);
   } else {
     set.set("start_speed_kmh", a.ramp_start_kmh);
     set.set("disturbance_mm", a.ramp_disturbance);
@@ -354,6 +359,11 @@ void register_critical_speed(CLI::App& app, CommandRunner& run) {
   cmd->add_option("--deceleration", a->deceleration, "Ramping deceleration [m/s^2] (default: scenario, else 0.5)")
       ->check(CLI::Range(0.001, 10.0));
   cmd->add_flag("!--no-up-branch", a->up_branch, "Sweep only the strongly disturbed (down) branch");
+  auto* on = cmd->add_flag("--continuation", a->continuation_on,
+                           "Path following on the down branch: each speed starts from the limit cycle of the one "
+                           "above (serial; default: the scenario's setting, else off)");
+  cmd->add_flag("--no-continuation", a->continuation_off, "Every down-branch speed from the large disturbance")
+      ->excludes(on);
   cmd->add_option("--threads", a->threads, "Worker threads per process (0: all cores)")
       ->check(CLI::Range(0, 256))
       ->capture_default_str();

@@ -88,7 +88,7 @@ std::shared_ptr<const ContactGeometry> load_geometry(const InputNode& g, const s
 
 CriticalSpeedSettings load_critical_speed_settings(const InputNode& n) {
   n.allow_only({"v_min_kmh", "v_max_kmh", "v_step_kmh", "duration", "disturbance_mm", "small_disturbance_mm",
-                "threshold_mm", "ramping"});
+                "threshold_mm", "continuation", "ramping"});
   CriticalSpeedSettings c;
   c.v_min_kmh = n.has("v_min_kmh") ? n.in_range("v_min_kmh", 0.0, 720.0, true) : c.v_min_kmh;
   c.v_max_kmh = n.has("v_max_kmh") ? n.in_range("v_max_kmh", 0.0, 720.0, true) : c.v_max_kmh;
@@ -99,6 +99,7 @@ CriticalSpeedSettings load_critical_speed_settings(const InputNode& n) {
   c.small_disturbance_mm =
       n.has("small_disturbance_mm") ? n.in_range("small_disturbance_mm", 0.001, 20.0) : c.small_disturbance_mm;
   c.threshold_mm = n.has("threshold_mm") ? n.in_range("threshold_mm", 0.001, 20.0) : c.threshold_mm;
+  if (auto cn = n.find("continuation")) c.continuation = cn->as_bool();
   if (auto r = n.find("ramping")) {
     r->allow_only({"v_start_kmh", "disturbance_mm", "deceleration"});
     if (r->has("v_start_kmh")) c.ramp_start_kmh = r->in_range("v_start_kmh", 0.0, 720.0, true);

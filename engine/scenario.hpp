@@ -30,7 +30,7 @@
 //   initial: {ws1.lateral: 0.001}       # state name: value (deviations)
 //   critical_speed:                     # optional: analysis settings that suit this vehicle
 //     {v_min_kmh: 150, v_max_kmh: 350, v_step_kmh: 10, duration: 6, disturbance_mm: 5,
-//      small_disturbance_mm: 0.5, threshold_mm: 0.5,
+//      small_disturbance_mm: 0.5, threshold_mm: 0.5, continuation: false,
 //      ramping: {v_start_kmh: 290, disturbance_mm: 0.5, deceleration: 0.5}}
 #pragma once
 
@@ -51,6 +51,7 @@ struct CriticalSpeedSettings {
   double disturbance_mm = 8.0;         // down branch
   double small_disturbance_mm = 0.5;   // up branch
   double threshold_mm = 0.5;           // settled amplitude that counts as hunting
+  bool continuation = false;           // path following on the down branch
   double ramp_start_kmh = 0.0;         // 0: v_max_kmh
   double ramp_disturbance_mm = 0.0;    // 0: disturbance_mm
   double deceleration = 0.5;           // [m/s^2]

@@ -8,6 +8,11 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <cstdlib>
+#include <thread>
+#include <sstream>
+#include <map>
+#include <fstream>
 
 #include "core/errors.hpp"
 #include "engine/linearisation.hpp"
@@ -42,7 +47,9 @@ struct PointOutcome {
   bool failed = false;
 };
 
-PointOutcome run_point(const Scenario& base, double speed, double shift, const BifurcationOptions& o) {
+// One constant-speed run from the state x0; the final state goes to *x_end.
+PointOutcome run_point(const Scenario& base, double speed, const Eigen::VectorXd& x0, const BifurcationOptions& o,
+                       Eigen::VectorXd* x_end = nullptr) {
   const Scenario sc = at_speed(base, speed, 0.0);
   const std::size_t nw = sc.model.wheelsets.size();
   std::vector<double> t;
@@ -52,10 +59,11 @@ PointOutcome run_point(const Scenario& base, double speed, double shift, const B
   Observer obs = [&](double ti, const Eigen::VectorXd& x, const Data&) {
     t.push_back(ti);
     for (std::size_t w = 0; w < nw; ++w) y[w].push_back(x[sc.model.bodies[sc.model.wheelsets[w].body].q_index[kLat]]);
+    if (x_end) *x_end = x;
   };
   PointOutcome out;
   try {
-    simulate(sc.model, sc.integrator, disturbed_state(sc, shift), o.duration, dt, obs);
+    simulate(sc.model, sc.integrator, x0, o.duration, dt, obs);
   } catch (const NumericalError& e) {
     // A run that derails or lifts a wheel is hunting violently: it counts as
     // unstable, with the amplitude it had reached.
@@ -119,6 +127,12 @@ double collapse_speed(const std::vector<double>& t, const std::vector<double>& v
 
 }  // namespace
 
+namespace {
+BifurcationResult collect(const std::vector<SweepResult>& rows, const BifurcationOptions& o);
+BifurcationResult continuation_sweep(const Scenario& scenario, const BifurcationOptions& o,
+                                     const std::vector<SweepPoint>& points, const std::string& points_csv);
+}  // namespace
+
 bool is_hunting(const BifurcationPoint& p, const BifurcationOptions& o) {
   if (p.failed) return true;
   return p.amplitude > o.threshold && p.growth > -o.decay_tolerance;
@@ -159,6 +173,7 @@ BifurcationResult bifurcation_sweep(const Scenario& scenario, const BifurcationO
       points.push_back({index++, key, {v, std::string(branch) == "down" ? 1.0 : 0.0}});
     }
   }
+  if (o.continuation) return continuation_sweep(scenario, o, points, points_csv);
   SweepOptions so;
   so.output = points_csv;
   // Only deterministic values go into the points file, so that thread and MPI
@@ -170,11 +185,16 @@ BifurcationResult bifurcation_sweep(const Scenario& scenario, const BifurcationO
   auto fn = [&](const SweepPoint& p) {
     const double v = p.params[0];
     const bool down = p.params[1] > 0.5;
-    const PointOutcome r = run_point(scenario, v, down ? o.large_disturbance : o.small_disturbance, o);
+    const PointOutcome r =
+        run_point(scenario, v, disturbed_state(scenario, down ? o.large_disturbance : o.small_disturbance), o);
     return std::vector<double>{v, p.params[1], r.amplitude, r.frequency, r.growth, r.failed ? 1.0 : 0.0};
   };
-  const auto rows = run_sweep(points, fn, so);
+  return collect(run_sweep(points, fn, so), o);
+}
 
+namespace {
+
+BifurcationResult collect(const std::vector<SweepResult>& rows, const BifurcationOptions& o) {
   BifurcationResult res;
   res.resolution = o.v_step;
   for (const auto& r : rows) {
@@ -202,6 +222,98 @@ BifurcationResult bifurcation_sweep(const Scenario& scenario, const BifurcationO
   }
   return res;
 }
+
+// Path following on the down branch: the speeds run one after the other from
+// the top, each started from the final state of the one above (on the limit
+// cycle while it exists), the first and every one after a stopped run from the
+// large disturbance. The up branch runs in parallel as usual. Files: the down
+// chain in OUT.down.csv (+ its final states, one line per point, in
+// OUT.down.states so that an interrupted chain resumes where it stopped), the
+// up branch in OUT.up.csv, both merged into OUT.
+BifurcationResult continuation_sweep(const Scenario& scenario, const BifurcationOptions& o,
+                                     const std::vector<SweepPoint>& points, const std::string& points_csv) {
+  if (mpi_context().size > 1)
+    throw InputError("bifurcation sweep: continuation runs the down branch as one serial chain; "
+                     "use threads (--threads), not mpirun");
+  std::vector<SweepPoint> down, up;
+  for (const auto& p : points) (p.params[1] > 0.5 ? down : up).push_back(p);
+  const std::vector<std::string> columns = {"speed_m_s", "down", "amplitude_m", "frequency_hz", "growth", "failed"};
+  auto values = [](double v, double branch, const PointOutcome& r) {
+    return std::vector<double>{v, branch, r.amplitude, r.frequency, r.growth, r.failed ? 1.0 : 0.0};
+  };
+
+  // Final states of finished chain points (key -> state).
+  const std::string states_file = points_csv + ".down.states";
+  std::map<std::string, Eigen::VectorXd> states;
+  {
+    std::ifstream in(states_file);
+    for (std::string line; std::getline(in, line);) {
+      std::stringstream ss(line);
+      std::string key, cell;
+      if (!std::getline(ss, key, ',')) continue;
+      std::vector<double> x;
+      while (std::getline(ss, cell, ',')) x.push_back(std::strtod(cell.c_str(), nullptr));
+      if (static_cast<int>(x.size()) == scenario.model.n_states)
+        states[key] = Eigen::Map<const Eigen::VectorXd>(x.data(), static_cast<Eigen::Index>(x.size()));
+    }
+  }
+  std::vector<SweepResult> rows;
+  std::thread up_thread;
+  std::exception_ptr up_error;
+  std::vector<SweepResult> up_rows;
+  if (!up.empty()) {
+    up_thread = std::thread([&] {
+      try {
+        const int total = o.threads > 0 ? o.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+        SweepOptions so{points_csv + ".up.csv", columns, std::max(1, total - 1), false, 5.0,
+                        "bifurcation sweep, up branch"};
+        up_rows = run_sweep(up, [&](const SweepPoint& p) {
+          const double v = p.params[0];
+          return values(v, 0.0, run_point(scenario, v, disturbed_state(scenario, o.small_disturbance), o));
+        }, so);
+      } catch (...) {
+        up_error = std::current_exception();
+      }
+    });
+  }
+  std::exception_ptr down_error;
+  try {
+    std::ofstream state_out(states_file, std::ios::app);
+    std::map<std::string, std::string> above;  // key -> key of the next higher speed
+    for (std::size_t k = 1; k < down.size(); ++k) above[down[k].key] = down[k - 1].key;
+    SweepOptions so{points_csv + ".down.csv", columns, 1, false, 5.0, "bifurcation sweep, down branch (continuation)"};
+    rows = run_sweep(down, [&](const SweepPoint& p) {
+      const double v = p.params[0];
+      Eigen::VectorXd x0 = disturbed_state(scenario, o.large_disturbance);
+      if (auto a = above.find(p.key); a != above.end())
+        if (auto it = states.find(a->second); it != states.end()) x0 = it->second;
+      Eigen::VectorXd x_end;
+      const PointOutcome r = run_point(scenario, v, x0, o, &x_end);
+      // A stopped run leaves no usable state: the next speed starts afresh.
+      if (!r.failed && x_end.size() == scenario.model.n_states) {
+        states[p.key] = x_end;
+        state_out << p.key;
+        char buf[40];
+        for (Eigen::Index i = 0; i < x_end.size(); ++i) {
+          std::snprintf(buf, sizeof buf, ",%.17g", x_end[i]);
+          state_out << buf;
+        }
+        state_out << '\n' << std::flush;
+      }
+      return values(v, 1.0, r);
+    }, so);
+  } catch (...) {
+    down_error = std::current_exception();
+  }
+  if (up_thread.joinable()) up_thread.join();
+  if (down_error) std::rethrow_exception(down_error);
+  if (up_error) std::rethrow_exception(up_error);
+  rows.insert(rows.end(), up_rows.begin(), up_rows.end());
+  write_sweep_file(points_csv, columns, rows);
+  return collect(rows, o);
+}
+
+}  // namespace
 
 RampingResult ramping(const Scenario& scenario, const RampingOptions& o) {
   if (!(o.v_start > o.v_end && o.v_end > 0.0 && o.deceleration > 0.0))

@@ -45,6 +45,11 @@ struct BifurcationOptions {
   // peaks over the tail) is a transient, not a limit cycle, whatever its amplitude.
   double decay_tolerance = 0.05;
   bool up_branch = true;             // also sweep the weakly disturbed branch
+  // Path following on the down branch: each speed starts from the final state
+  // of the next higher one (the top one from the large disturbance), so the
+  // branch is followed down to its fold whatever the disturbance; serial for
+  // the down branch (the up branch still runs in parallel), threads only.
+  bool continuation = false;
   int threads = 0;                   // 0: all cores
   bool use_mpi = false;
 };

@@ -250,15 +250,7 @@ std::vector<SweepResult> run_sweep(const std::vector<SweepPoint>& points, const 
       throw NumericalError(o.label + ": point " + p.key + " has no result after the sweep");
     all.push_back(it->second);
   }
-  if (mpi.rank == 0) {
-    const std::string tmp = o.output + ".tmp";
-    {
-      std::ofstream f(tmp, std::ios::binary);
-      f << header_line(o) << "\n";
-      for (const auto& r : all) f << result_line(r) << "\n";
-    }
-    fs::rename(tmp, o.output);
-  }
+  if (mpi.rank == 0) write_sweep_file(o.output, o.result_columns, all);
 #ifdef RAILSIM_HAVE_MPI
   if (mpi.active) MPI_Barrier(MPI_COMM_WORLD);
 #endif
@@ -266,6 +258,19 @@ std::vector<SweepResult> run_sweep(const std::vector<SweepPoint>& points, const 
   if (mpi.rank == 0)
     for (int r = 0; r < std::max(mpi.size, 1); ++r) fs::remove(o.output + ".part" + std::to_string(r));
   return all;
+}
+
+void write_sweep_file(const std::string& output, const std::vector<std::string>& columns,
+                      const std::vector<SweepResult>& rows) {
+  SweepOptions o;
+  o.result_columns = columns;
+  const std::string tmp = output + ".tmp";
+  {
+    std::ofstream f(tmp, std::ios::binary);
+    f << header_line(o) << "\n";
+    for (const auto& r : rows) f << result_line(r) << "\n";
+  }
+  fs::rename(tmp, output);
 }
 
 }  // namespace railsim::engine

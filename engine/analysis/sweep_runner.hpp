@@ -52,6 +52,11 @@ std::vector<SweepResult> run_sweep(const std::vector<SweepPoint>& points, const 
 // Finished results found in OUT and OUT.part* (for inspection and tests).
 std::vector<SweepResult> read_finished_points(const std::string& output, std::size_t n_values);
 
+// Write a finished sweep file (header "index,key,<columns>", one line per row,
+// values with 17 digits) atomically (temporary file + rename).
+void write_sweep_file(const std::string& output, const std::vector<std::string>& columns,
+                      const std::vector<SweepResult>& rows);
+
 // MPI helpers (no-ops returning rank 0 of 1 without MPI). mpi_init is
 // idempotent and registers finalisation at exit.
 struct MpiContext {
