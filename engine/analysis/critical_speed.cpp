@@ -261,21 +261,22 @@ BifurcationResult continuation_sweep(const Scenario& scenario, const Bifurcation
   std::thread up_thread;
   std::exception_ptr up_error;
   std::vector<SweepResult> up_rows;
-  if (!up.empty()) {
-    up_thread = std::thread([&] {
-      try {
-        const int total = o.threads > 0 ? o.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-        SweepOptions so{points_csv + ".up.csv", columns, std::max(1, total - 1), false, 5.0,
-                        "bifurcation sweep, up branch"};
-        up_rows = run_sweep(up, [&](const SweepPoint& p) {
-          const double v = p.params[0];
-          return values(v, 0.0, run_point(scenario, v, disturbed_state(scenario, o.small_disturbance), o));
-        }, so);
-      } catch (...) {
-        up_error = std::current_exception();
-      }
-    });
-  }
+  // With one worker the up branch runs after the chain, else beside it on the
+  // other workers.
+  const int total = o.threads > 0 ? o.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  auto run_up = [&] {
+    try {
+      SweepOptions so{points_csv + ".up.csv", columns, std::max(1, total - 1), false, 5.0,
+                      "bifurcation sweep, up branch"};
+      up_rows = run_sweep(up, [&](const SweepPoint& p) {
+        const double v = p.params[0];
+        return values(v, 0.0, run_point(scenario, v, disturbed_state(scenario, o.small_disturbance), o));
+      }, so);
+    } catch (...) {
+      up_error = std::current_exception();
+    }
+  };
+  if (!up.empty() && total > 1) up_thread = std::thread(run_up);
   std::exception_ptr down_error;
   try {
     std::ofstream state_out(states_file, std::ios::app);
@@ -306,6 +307,7 @@ BifurcationResult continuation_sweep(const Scenario& scenario, const Bifurcation
     down_error = std::current_exception();
   }
   if (up_thread.joinable()) up_thread.join();
+  else if (!up.empty() && !down_error) run_up();
   if (down_error) std::rethrow_exception(down_error);
   if (up_error) std::rethrow_exception(up_error);
   rows.insert(rows.end(), up_rows.begin(), up_rows.end());
