@@ -36,7 +36,10 @@ class ArkodeErk final : public Integrator {
   void advance(double t_out, Eigen::VectorXd& x) override {
     ERKStepSetStopTime(mem_, t_out);
     const int flag = ERKStepEvolve(mem_, t_out, c_.y, &t_, ARK_NORMAL);
-    if (flag < 0) throw NumericalError(c_.failure(t_, name(), flag, ERKStepGetReturnFlagName(flag), true));
+    if (flag < 0) {
+      const std::string what = SundialsCommon::take_flag_name(ERKStepGetReturnFlagName(flag));
+      throw NumericalError(c_.failure(t_, name(), flag, what.c_str(), true));
+    }
     c_.store(x);
   }
   IntegratorStats stats() const override {
@@ -83,7 +86,10 @@ class ArkodeDirk final : public Integrator {
   void advance(double t_out, Eigen::VectorXd& x) override {
     ARKStepSetStopTime(mem_, t_out);
     const int flag = ARKStepEvolve(mem_, t_out, c_.y, &t_, ARK_NORMAL);
-    if (flag < 0) throw NumericalError(c_.failure(t_, name(), flag, ARKStepGetReturnFlagName(flag), false));
+    if (flag < 0) {
+      const std::string what = SundialsCommon::take_flag_name(ARKStepGetReturnFlagName(flag));
+      throw NumericalError(c_.failure(t_, name(), flag, what.c_str(), false));
+    }
     c_.store(x);
   }
   IntegratorStats stats() const override {

@@ -39,7 +39,10 @@ class CvodeIntegrator final : public Integrator {
   }
   void advance(double t_out, Eigen::VectorXd& x) override {
     const int flag = CVode(mem_, t_out, c_.y, &t_, CV_NORMAL);
-    if (flag < 0) throw NumericalError(c_.failure(t_, name(), flag, CVodeGetReturnFlagName(flag), false));
+    if (flag < 0) {
+      const std::string what = SundialsCommon::take_flag_name(CVodeGetReturnFlagName(flag));
+      throw NumericalError(c_.failure(t_, name(), flag, what.c_str(), false));
+    }
     c_.store(x);
   }
   IntegratorStats stats() const override {

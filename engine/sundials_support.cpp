@@ -1,6 +1,8 @@
 // SUNDIALS plumbing; see sundials_support.hpp.
 #include "engine/sundials_support.hpp"
 
+#include <cstdlib>
+
 #include <sunlinsol/sunlinsol_band.h>
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_band.h>
@@ -95,6 +97,12 @@ int SundialsCommon::jac_cb(double t, N_Vector yv, N_Vector fy, SUNMatrix Jm, voi
 void SundialsCommon::err_cb(int, const char* module, const char* function, char* msg, void* user) {
   auto* self = static_cast<SundialsCommon*>(user);
   self->last_error = std::string(module) + "/" + function + ": " + msg;
+}
+
+std::string SundialsCommon::take_flag_name(char* name) {
+  std::string out = name ? name : "unknown flag";
+  std::free(name);
+  return out;
 }
 
 std::string SundialsCommon::failure(double t, const std::string& name, int flag, const char* flag_name,

@@ -46,6 +46,9 @@ struct SundialsCommon {
   static void err_cb(int code, const char* module, const char* function, char* msg, void* user);
   // Failure text for a negative return flag.
   std::string failure(double t, const std::string& name, int flag, const char* flag_name, bool is_explicit) const;
+  // The *GetReturnFlagName functions of SUNDIALS return a malloc'd string that
+  // the caller frees: copy it and free it.
+  static std::string take_flag_name(char* name);
 };
 
 }  // namespace railsim::engine
