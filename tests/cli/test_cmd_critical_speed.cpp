@@ -124,7 +124,7 @@ TEST_CASE("railsim critical-speed under mpirun -np 2 gives the thread run's swee
   const std::string sweep = " --v-min 150 --v-max 180 --v-step 5 --duration 6";
   const auto thr = run_railsim("critical-speed '" + kScenario + "' --out '" + dir + "/threads'" + sweep);
   REQUIRE(thr.exit_code == 0);
-  const std::string mpi = "mpirun --allow-run-as-root --oversubscribe -np 2 \"" + std::string(RAILSIM_BINARY) +
+  const std::string mpi = railsim::test::mpirun_prefix() + "mpirun --allow-run-as-root --oversubscribe -np 2 \"" + std::string(RAILSIM_BINARY) +
                           "\" critical-speed '" + kScenario + "' --threads 1 --out '" + dir + "/mpi'" + sweep +
                           " > '" + dir + "/mpi.log' 2>&1";
   REQUIRE(std::system(mpi.c_str()) == 0);

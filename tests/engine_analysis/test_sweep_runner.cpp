@@ -89,7 +89,7 @@ TEST_CASE("an interrupted sweep resumes with all points and no duplicates", "[sw
 TEST_CASE("MPI with two ranks writes the same sweep file as threads", "[sweep][mpi]") {
   const std::string dir = railsim::test::temp_dir("sweep_mpi");
   const std::string probe = std::string(RAILSIM_SWEEP_PROBE);
-  const std::string mpi = "mpirun --allow-run-as-root --oversubscribe -np 2 \"" + probe + "\" " + dir + "/mpi.csv";
+  const std::string mpi = railsim::test::mpirun_prefix() + "mpirun --allow-run-as-root --oversubscribe -np 2 \"" + probe + "\" " + dir + "/mpi.csv";
   const std::string thr = "\"" + probe + "\" " + dir + "/threads.csv";
   REQUIRE(std::system((mpi + " > " + dir + "/mpi.log 2>&1").c_str()) == 0);
   REQUIRE(std::system((thr + " > " + dir + "/thr.log 2>&1").c_str()) == 0);
