@@ -19,6 +19,7 @@
 #include <sstream>
 
 #include "cli/commands.hpp"
+#include "cli/support_speed_range.hpp"
 #include "contact/reduction.hpp"
 #include "contact/registry.hpp"
 #include "core/errors.hpp"
@@ -204,10 +205,7 @@ int run_critical_speed(const CriticalSpeedArgs& args) {
   const engine::MpiContext mpi = engine::mpi_context();
   engine::Scenario base = engine::load_scenario(args.scenario);
   const CriticalSpeedArgs a = resolve_settings(args, base.critical_speed);
-  if (!(a.v_min_kmh > 0 && a.v_max_kmh > a.v_min_kmh))
-    throw InputError("--v-min/--v-max: need 0 < v-min < v-max (got " + std::to_string(a.v_min_kmh) + ", " +
-                     std::to_string(a.v_max_kmh) + ")");
-  if (!(a.v_step_kmh > 0)) throw InputError("--v-step: expected a positive number");
+  check_speed_range(a.v_min_kmh, a.v_max_kmh, a.v_step_kmh);
   contact::ReductionFactors k;
   const contact::ReductionFactors* kp = nullptr;
   if (!a.reduction.empty()) {

@@ -17,6 +17,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "cli/support_speed_range.hpp"
 #include "core/errors.hpp"
 #include "engine/analysis/critical_speed.hpp"
 #include "engine/linearisation.hpp"
@@ -36,10 +37,7 @@ struct ModesArgs {
 };
 
 int run_modes(const ModesArgs& a) {
-  if (!(a.v_min_kmh > 0 && a.v_max_kmh > a.v_min_kmh))
-    throw InputError("--v-min/--v-max: need 0 < v-min < v-max (got " + std::to_string(a.v_min_kmh) + ", " +
-                     std::to_string(a.v_max_kmh) + ")");
-  if (!(a.v_step_kmh > 0)) throw InputError("--v-step: expected a positive number");
+  check_speed_range(a.v_min_kmh, a.v_max_kmh, a.v_step_kmh);
   const engine::Scenario sc = engine::load_scenario(a.scenario);
   std::error_code ec;
   std::filesystem::create_directories(a.out, ec);
