@@ -12,20 +12,16 @@
 //   p0 = 3 Fz / (2 pi a b),  approach = (A+B) b^2 K(e) / E(e),
 //   with K, E complete elliptic integrals of PARAMETER m = e^2 (Boost.Math takes
 //   the MODULUS k = e) and E* = E / (2 (1 - nu^2)) for identical materials.
-//   The shape equation is solved in the cancellation-free Carlson form
-//   A/B = (1-m) R_D / (3 R_F - R_D),  R_F = R_F(0, 1-m, 1), R_D = R_D(0, 1-m, 1)
-//   (Bulirsch / Fukushima associate integrals, as CONTACT's `eli`), by Newton's
-//   method on ln(a/b). Fast path (B/A <= 1e4): start from a cubic B-spline of the
-//   exact solution (built once, < 1e-8 error), one Newton step, K and E carried
-//   by their derivatives. Otherwise, or if that step is not small, Boost's
-//   safeguarded Newton-Raphson with bisection fallback inside a guaranteed
-//   bracket, started from the least-squares fit of physics-reference.md sec. 1.5.
+//   The ellipse shape (g = b/a, K, E) from the curvature ratio comes from
+//   hertz_shape.hpp: exact to double precision (piecewise Chebyshev table of the
+//   root-found solution for B/A <= 1e4, the root-find itself beyond).
 //
 // Units: curvatures 1/m, lengths m, load N, pressure Pa. A and B are the sums of
 // the principal curvatures of both bodies divided by two (gap h = A x^2 + B y^2).
 // When A > B the patch is longer across (b > a); `a` is always along x.
 #pragma once
 
+#include "contact/hertz_shape.hpp"
 #include "contact/types.hpp"
 
 namespace railsim::contact {
@@ -53,17 +49,6 @@ struct HertzCoefficients {
   double m, n, r;
 };
 HertzCoefficients hertz_coefficients(double A, double B);
-
-// The ellipse shape alone, from the curvature ratio: g = minor/major semi-axis
-// ratio in (0, 1], and K, E of parameter e^2 = 1 - g^2. For A <= B the major axis
-// is along x. Exposed for tests and for callers that cache the shape.
-struct HertzShape {
-  double g;   // minor / major semi-axis
-  double K;   // K(e), complete elliptic integral of the first kind
-  double E;   // E(e), complete elliptic integral of the second kind
-};
-// ratio = min(A,B)/max(A,B) in (0, 1].
-HertzShape hertz_shape(double ratio);
 
 // The load-dependent part alone, for a shape computed once with
 // hertz_shape(min(A,B)/max(A,B)): the shape depends on the curvature ratio only,

@@ -6,6 +6,7 @@
 #include <boost/math/special_functions/ellint_1.hpp>
 #include <boost/math/special_functions/ellint_2.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -74,6 +75,27 @@ TEST_CASE("shape equation holds across the fast and the iterative paths", "[hert
   CHECK(rel(in.g, out.g) < 1e-11);
   CHECK(rel(in.K, out.K) < 1e-11);
   CHECK(rel(in.E, out.E) < 1e-11);
+}
+
+TEST_CASE("fast shape table equals the exact root-found shape to 1e-14", "[hertz]") {
+  // hertz_shape reads g, K, E from Chebyshev pieces built from hertz_shape_exact
+  // (Newton on the Carlson form); 4000 log-spaced ratios across the table
+  // (B/A in [1, 1e4], many between the interpolation nodes) plus the piece edges.
+  double worst = 0.0;
+  auto compare = [&](double ratio) {
+    const HertzShape f = hertz_shape(ratio), x = hertz_shape_exact(ratio);
+    worst = std::max({worst, rel(f.g, x.g), rel(f.K, x.K), rel(f.E, x.E)});
+  };
+  for (int i = 0; i <= 4000; ++i) compare(std::pow(10.0, -4.0 * (i + 0.37) / 4000.5));
+  for (int i = 1; i < 64; ++i) compare(std::exp(-std::log(1e4) * i / 64.0));
+  INFO("worst relative difference " << worst);
+  CHECK(worst < 1e-14);
+  // The exact solution satisfies the shape equation to rounding.
+  for (double ratio : {0.99, 0.5, 1e-2, 1e-4, 1e-7}) {
+    const HertzShape s = hertz_shape_exact(ratio);
+    const double mc = s.g * s.g;
+    CHECK(rel((s.K - s.E) * mc / (s.E - mc * s.K), ratio) < 1e-12);
+  }
 }
 
 TEST_CASE("classical m n r table (physics-reference 1.3) to printed precision", "[hertz]") {
