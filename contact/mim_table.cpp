@@ -149,13 +149,10 @@ std::string read_file(const std::string& path) {
 
 // FFTW's planner is not thread-safe: a MimSolver plans (and frees plans) when
 // its grid changes, i.e. on the first solve for a new a/b, and when destroyed.
-// Those calls are serialised here; plain solves run in parallel. (The MIM
-// convolution serialises its own planning too since commit 54f333f; this lock
-// is kept so the table does not depend on that detail.)
-std::mutex& fftw_planner_mutex() {
-  static std::mutex m;
-  return m;
-}
+// Its convolution serialises those calls with the program-wide
+// railsim::fftw_planner_mutex() (core/fftw_planner_lock.hpp), so the table's
+// worker threads need no lock of their own (and must not hold that one: it is
+// not recursive).
 
 constexpr std::size_t kRecordSize = sizeof(std::uint64_t) + 3 * sizeof(double) + sizeof(std::uint64_t);
 
@@ -228,7 +225,6 @@ mim::MimOptions solver_options(const MimTableSpec& spec) {
 
 void mim_table_reference(const MimTableSpec& spec, double aob, double xi_n, double eta_n, double psi_n,
                          double out[3]) {
-  std::lock_guard<std::mutex> plan(fftw_planner_mutex());
   mim::MimSolver solver(solver_options(spec));
   reference_solve(solver, spec, aob, xi_n, eta_n, psi_n, out);
 }
@@ -292,11 +288,7 @@ std::unique_ptr<MimTable> MimTable::build(const MimTableSpec& spec, const std::s
   const auto worker = [&]() {
     std::unique_ptr<mim::MimSolver> solver;
     try {
-      {
-        std::lock_guard<std::mutex> plan(fftw_planner_mutex());
-        solver = std::make_unique<mim::MimSolver>(solver_options(spec));
-      }
-      double last_aob = -1.0;
+      solver = std::make_unique<mim::MimSolver>(solver_options(spec));
       for (;;) {
         if (stop.load()) break;
         const std::size_t idx = next.fetch_add(1);
@@ -304,15 +296,8 @@ std::unique_ptr<MimTable> MimTable::build(const MimTableSpec& spec, const std::s
         if (done[idx]) continue;
         const std::size_t l = idx % nl, k = (idx / nl) % nk, j = (idx / (nl * nk)) % nj, i = idx / (nl * nk * nj);
         double v[3];
-        if (spec.aob[i] != last_aob) {  // new grid: the solver re-plans its FFTs
-          std::lock_guard<std::mutex> plan(fftw_planner_mutex());
-          reference_solve(*solver, spec, spec.aob[i], s_of_u(spec.uxi[j]), s_of_u(spec.ueta[k]),
-                          s_of_v(spec.vpsi[l]), v);
-          last_aob = spec.aob[i];
-        } else {
-          reference_solve(*solver, spec, spec.aob[i], s_of_u(spec.uxi[j]), s_of_u(spec.ueta[k]),
-                          s_of_v(spec.vpsi[l]), v);
-        }
+        reference_solve(*solver, spec, spec.aob[i], s_of_u(spec.uxi[j]), s_of_u(spec.ueta[k]),
+                        s_of_v(spec.vpsi[l]), v);
         std::lock_guard<std::mutex> lock(mtx);
         std::copy(v, v + 3, &t->values_[3 * idx]);
         done[idx] = 1;
@@ -336,7 +321,6 @@ std::unique_ptr<MimTable> MimTable::build(const MimTableSpec& spec, const std::s
       if (!error) error = std::current_exception();
       stop = true;
     }
-    std::lock_guard<std::mutex> plan(fftw_planner_mutex());
     solver.reset();
   };
   int nthreads = options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency());

@@ -10,6 +10,7 @@
 #include <random>
 
 #include "core/errors.hpp"
+#include "core/fftw_planner_lock.hpp"
 
 namespace railsim::tracks {
 
@@ -19,11 +20,8 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr std::size_t kMaxFftSize = std::size_t{1} << 25;  // 32 Mi samples (~0.5 GB of work arrays)
 
 // FFTW's planner is not thread-safe; execution is. Plan creation and
-// destruction are serialised here (FFTW_ESTIMATE: deterministic plans).
-std::mutex& fftw_planner_mutex() {
-  static std::mutex m;
-  return m;
-}
+// destruction take the program-wide planner lock (core/fftw_planner_lock.hpp);
+// FFTW_ESTIMATE: deterministic plans.
 
 struct FftwFree {
   void operator()(void* p) const { fftw_free(p); }

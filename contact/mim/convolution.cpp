@@ -7,6 +7,8 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "core/fftw_planner_lock.hpp"
+
 namespace railsim::contact::mim {
 
 int fft_friendly_size(int target) {
@@ -16,11 +18,6 @@ int fft_friendly_size(int target) {
       while (m % p == 0) m /= p;
     if (m == 1) return n;
   }
-}
-
-std::mutex& fftw_planner_mutex() {
-  static std::mutex m;  // guards FFTW's (global) planner state only
-  return m;
 }
 
 namespace {
@@ -44,7 +41,7 @@ Convolution::Convolution(int mx, int my, int n_kernels, unsigned fftw_flags)
   }
   {
     // Plans first: FFTW_MEASURE overwrites the arrays while planning.
-    std::lock_guard<std::mutex> lock(fftw_planner_mutex());
+    std::lock_guard<std::mutex> lock(railsim::fftw_planner_mutex());
     plan_fwd_ = fftw_plan_dft_r2c_2d(n0_, n1_, rin_, as_fc(c1_), fftw_flags);
     plan_inv_ = fftw_plan_dft_c2r_2d(n0_, n1_, as_fc(c1_), rout_, fftw_flags);
   }
@@ -70,7 +67,7 @@ Convolution::~Convolution() { release(); }
 void Convolution::release() {
   for (auto*& k : kernels_) fftw_free(k), k = nullptr;
   {
-    std::lock_guard<std::mutex> lock(fftw_planner_mutex());
+    std::lock_guard<std::mutex> lock(railsim::fftw_planner_mutex());
     if (plan_fwd_) fftw_destroy_plan(as_plan(plan_fwd_));
     if (plan_inv_) fftw_destroy_plan(as_plan(plan_inv_));
     plan_fwd_ = plan_inv_ = nullptr;

@@ -8,13 +8,13 @@
 // the circular wrap never reaches the grid. Plans and buffers are created once
 // (constructor); apply() allocates nothing. One Convolution per thread; FFTW's
 // planner is not thread-safe, so plan creation and destruction are serialised
-// by fftw_planner_mutex() inside the constructor and destructor (callers need
-// not, and must not, hold it around a solve). Units: whatever the kernel carries.
+// by railsim::fftw_planner_mutex() (core/fftw_planner_lock.hpp) inside the
+// constructor and destructor (callers need not, and must not, hold it around a
+// solve). Units: whatever the kernel carries.
 #pragma once
 
 #include <complex>
 #include <functional>
-#include <mutex>
 #include <vector>
 
 namespace railsim::contact::mim {
@@ -59,9 +59,6 @@ class Convolution {
   void* plan_fwd_ = nullptr;
   void* plan_inv_ = nullptr;
 };
-
-// The lock serialising FFTW planner calls of this module.
-std::mutex& fftw_planner_mutex();
 
 // Smallest n >= target whose prime factors are 2, 3, 5, 7.
 int fft_friendly_size(int target);
