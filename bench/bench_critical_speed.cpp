@@ -3,9 +3,9 @@
 // table, Kalker + CHOPAYA, its own sweep settings: 150..350 km/h in 10 km/h
 // steps, both branches, 10 s per point = 42 runs) and its scaling from one to
 // two worker threads, with the scenario's path following on the down branch
-// (BM_DefaultSweep: the down chain is serial, so two workers overlap it with
-// the up branch only) and with every point independent (BM_ParallelSweep:
-// the sweep runner's own scaling). Counters: "points", "s_per_point" (wall),
+// (BM_DefaultSweep: the parallel sweep, then a short serial chain below the
+// lowest hunting speed down to the fold) and with every point independent
+// (BM_ParallelSweep: the sweep runner's own scaling). Counters: "points", "s_per_point" (wall),
 // and on the two-thread runs "speedup" = T1/T2 and "efficiency" = T1/(2 T2)
 // (target > 0.85 for the independent points).
 // Each benchmark runs the whole sweep twice and keeps the faster (Iterations(1)): a few minutes.

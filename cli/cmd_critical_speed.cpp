@@ -358,8 +358,9 @@ void register_critical_speed(CLI::App& app, CommandRunner& run) {
       ->check(CLI::Range(0.001, 10.0));
   cmd->add_flag("!--no-up-branch", a->up_branch, "Sweep only the strongly disturbed (down) branch");
   auto* on = cmd->add_flag("--continuation", a->continuation_on,
-                           "Path following on the down branch: each speed starts from the limit cycle of the one "
-                           "above (serial; default: the scenario's setting, else off)");
+                           "Path following on the down branch: below its lowest hunting speed, each speed starts "
+                           "from the limit cycle of the one above, down to the fold (default: the scenario's "
+                           "setting, else off)");
   cmd->add_flag("--no-continuation", a->continuation_off, "Every down-branch speed from the large disturbance")
       ->excludes(on);
   cmd->add_option("--threads", a->threads, "Worker threads per process (0: all cores)")

@@ -12,7 +12,9 @@
 #include <thread>
 #include <sstream>
 #include <map>
+#include <filesystem>
 #include <fstream>
+#include <mutex>
 
 #include "core/errors.hpp"
 #include "engine/linearisation.hpp"
@@ -128,6 +130,7 @@ double collapse_speed(const std::vector<double>& t, const std::vector<double>& v
 }  // namespace
 
 namespace {
+BifurcationPoint point_of(const SweepResult& r);
 BifurcationResult collect(const std::vector<SweepResult>& rows, const BifurcationOptions& o);
 BifurcationResult continuation_sweep(const Scenario& scenario, const BifurcationOptions& o,
                                      const std::vector<SweepPoint>& points, const std::string& points_csv);
@@ -194,19 +197,22 @@ BifurcationResult bifurcation_sweep(const Scenario& scenario, const BifurcationO
 
 namespace {
 
+BifurcationPoint point_of(const SweepResult& r) {
+  BifurcationPoint p;
+  p.speed = r.values[0];
+  p.branch = r.values[1] > 0.5 ? "down" : "up";
+  p.amplitude = r.values[2];
+  p.frequency = r.values[3];
+  p.growth = r.values[4];
+  p.failed = r.values[5] > 0.5;
+  p.continued = r.key.rfind("chain:", 0) == 0;
+  return p;
+}
+
 BifurcationResult collect(const std::vector<SweepResult>& rows, const BifurcationOptions& o) {
   BifurcationResult res;
   res.resolution = o.v_step;
-  for (const auto& r : rows) {
-    BifurcationPoint p;
-    p.speed = r.values[0];
-    p.branch = r.values[1] > 0.5 ? "down" : "up";
-    p.amplitude = r.values[2];
-    p.frequency = r.values[3];
-    p.growth = r.values[4];
-    p.failed = r.values[5] > 0.5;
-    res.points.push_back(p);
-  }
+  for (const auto& r : rows) res.points.push_back(point_of(r));
   std::sort(res.points.begin(), res.points.end(), [](const auto& a, const auto& b) {
     return a.branch != b.branch ? a.branch < b.branch : a.speed < b.speed;
   });
@@ -223,94 +229,129 @@ BifurcationResult collect(const std::vector<SweepResult>& rows, const Bifurcatio
   return res;
 }
 
-// Path following on the down branch: the speeds run one after the other from
-// the top, each started from the final state of the one above (on the limit
-// cycle while it exists), the first and every one after a stopped run from the
-// large disturbance. The up branch runs in parallel as usual. Files: the down
-// chain in OUT.down.csv (+ its final states, one line per point, in
-// OUT.down.states so that an interrupted chain resumes where it stopped), the
-// up branch in OUT.up.csv, both merged into OUT.
-BifurcationResult continuation_sweep(const Scenario& scenario, const BifurcationOptions& o,
-                                     const std::vector<SweepPoint>& points, const std::string& points_csv) {
-  if (mpi_context().size > 1)
-    throw InputError("bifurcation sweep: continuation runs the down branch as one serial chain; "
-                     "use threads (--threads), not mpirun");
-  std::vector<SweepPoint> down, up;
-  for (const auto& p : points) (p.params[1] > 0.5 ? down : up).push_back(p);
-  const std::vector<std::string> columns = {"speed_m_s", "down", "amplitude_m", "frequency_hz", "growth", "failed"};
-  auto values = [](double v, double branch, const PointOutcome& r) {
-    return std::vector<double>{v, branch, r.amplitude, r.frequency, r.growth, r.failed ? 1.0 : 0.0};
-  };
-
-  // Final states of finished chain points (key -> state).
-  const std::string states_file = points_csv + ".down.states";
-  std::map<std::string, Eigen::VectorXd> states;
-  {
-    std::ifstream in(states_file);
+// Final states of down-branch runs (key -> state), kept in memory and appended
+// to a file (one line per point: key, then the state with 17 digits, so that
+// reading it back is exact) as runs finish; thread-safe.
+class StateStore {
+ public:
+  StateStore(const std::string& path, int n_states) : n_(n_states) {
+    std::ifstream in(path);
     for (std::string line; std::getline(in, line);) {
       std::stringstream ss(line);
       std::string key, cell;
       if (!std::getline(ss, key, ',')) continue;
       std::vector<double> x;
       while (std::getline(ss, cell, ',')) x.push_back(std::strtod(cell.c_str(), nullptr));
-      if (static_cast<int>(x.size()) == scenario.model.n_states)
-        states[key] = Eigen::Map<const Eigen::VectorXd>(x.data(), static_cast<Eigen::Index>(x.size()));
+      if (static_cast<int>(x.size()) == n_)  // a torn last line is ignored
+        states_[key] = Eigen::Map<const Eigen::VectorXd>(x.data(), static_cast<Eigen::Index>(x.size()));
     }
+    in.close();
+    out_.open(path, std::ios::app);
   }
-  std::vector<SweepResult> rows;
-  std::thread up_thread;
-  std::exception_ptr up_error;
-  std::vector<SweepResult> up_rows;
-  // With one worker the up branch runs after the chain, else beside it on the
-  // other workers.
-  const int total = o.threads > 0 ? o.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  auto run_up = [&] {
-    try {
-      SweepOptions so{points_csv + ".up.csv", columns, std::max(1, total - 1), false, 5.0,
-                      "bifurcation sweep, up branch"};
-      up_rows = run_sweep(up, [&](const SweepPoint& p) {
-        const double v = p.params[0];
-        return values(v, 0.0, run_point(scenario, v, disturbed_state(scenario, o.small_disturbance), o));
-      }, so);
-    } catch (...) {
-      up_error = std::current_exception();
+  void put(const std::string& key, const Eigen::VectorXd& x) {
+    if (x.size() != n_) return;
+    std::string line = key;
+    char buf[40];
+    for (Eigen::Index i = 0; i < x.size(); ++i) {
+      std::snprintf(buf, sizeof buf, ",%.17g", x[i]);
+      line += buf;
     }
+    std::lock_guard<std::mutex> lock(mutex_);
+    states_[key] = x;
+    out_ << line << '\n' << std::flush;
+  }
+  const Eigen::VectorXd* find(const std::string& key) const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const auto it = states_.find(key);
+    return it == states_.end() ? nullptr : &it->second;
+  }
+
+ private:
+  int n_;
+  mutable std::mutex mutex_;
+  std::map<std::string, Eigen::VectorXd> states_;
+  std::ofstream out_;
+};
+
+// Path following on the down branch, in two phases.
+// 1. Every point of both branches runs in parallel, as without continuation;
+//    the down-branch runs keep their final states.
+// 2. From the lowest speed V_h of the contiguous hunting range of phase 1, a
+//    serial chain steps down: each speed starts from the final state of the one
+//    above (on the limit cycle while it exists), until a speed no longer hunts
+//    or a run stops: that is the fold of the branch. The chain's results
+//    replace phase 1's down-branch results at its speeds (keys "chain:<v>").
+// Above V_h the large disturbance already reaches the branch, so only the few
+// speeds between V_h and the fold run serially. Files: OUT.sweep.csv (phase 1),
+// OUT.down.states (final states), OUT.chain.csv (phase 2, rewritten after each
+// chain point); merged into OUT. An interrupted run resumes from them.
+BifurcationResult continuation_sweep(const Scenario& scenario, const BifurcationOptions& o,
+                                     const std::vector<SweepPoint>& points, const std::string& points_csv) {
+  if (mpi_context().size > 1)
+    throw InputError("bifurcation sweep: continuation keeps the final states of the runs in one file; "
+                     "use threads (--threads), not mpirun");
+  const std::vector<std::string> columns = {"speed_m_s", "down", "amplitude_m", "frequency_hz", "growth", "failed"};
+  auto values = [](double v, double branch, const PointOutcome& r) {
+    return std::vector<double>{v, branch, r.amplitude, r.frequency, r.growth, r.failed ? 1.0 : 0.0};
   };
-  if (!up.empty() && total > 1) up_thread = std::thread(run_up);
-  std::exception_ptr down_error;
-  try {
-    std::ofstream state_out(states_file, std::ios::app);
-    std::map<std::string, std::string> above;  // key -> key of the next higher speed
-    for (std::size_t k = 1; k < down.size(); ++k) above[down[k].key] = down[k - 1].key;
-    SweepOptions so{points_csv + ".down.csv", columns, 1, false, 5.0, "bifurcation sweep, down branch (continuation)"};
-    rows = run_sweep(down, [&](const SweepPoint& p) {
-      const double v = p.params[0];
-      Eigen::VectorXd x0 = disturbed_state(scenario, o.large_disturbance);
-      if (auto a = above.find(p.key); a != above.end())
-        if (auto it = states.find(a->second); it != states.end()) x0 = it->second;
-      Eigen::VectorXd x_end;
-      const PointOutcome r = run_point(scenario, v, x0, o, &x_end);
-      // A stopped run leaves no usable state: the next speed starts afresh.
-      if (!r.failed && x_end.size() == scenario.model.n_states) {
-        states[p.key] = x_end;
-        state_out << p.key;
-        char buf[40];
-        for (Eigen::Index i = 0; i < x_end.size(); ++i) {
-          std::snprintf(buf, sizeof buf, ",%.17g", x_end[i]);
-          state_out << buf;
-        }
-        state_out << '\n' << std::flush;
+  const std::filesystem::path out_path(points_csv);
+  if (out_path.has_parent_path()) std::filesystem::create_directories(out_path.parent_path());
+  StateStore states(points_csv + ".down.states", scenario.model.n_states);
+
+  // Phase 1: the plain sweep, keeping the down branch's final states.
+  SweepOptions so;
+  so.output = points_csv + ".sweep.csv";
+  so.result_columns = columns;
+  so.threads = o.threads;
+  so.label = "bifurcation sweep";
+  std::vector<SweepResult> rows = run_sweep(points, [&](const SweepPoint& p) {
+    const double v = p.params[0];
+    const bool down = p.params[1] > 0.5;
+    Eigen::VectorXd x_end;
+    const PointOutcome r = run_point(scenario, v, disturbed_state(scenario, down ? o.large_disturbance
+                                                                             : o.small_disturbance),
+                                     o, down ? &x_end : nullptr);
+    if (down && !r.failed) states.put(p.key, x_end);
+    return values(v, p.params[1], r);
+  }, so);
+
+  // Phase 2: the chain below V_h. Down rows in descending speed (the order of `points`).
+  std::vector<SweepResult*> down;
+  for (const auto& p : points)
+    if (p.params[1] > 0.5)
+      for (auto& r : rows)
+        if (r.index == p.index) down.push_back(&r);
+  long lowest = -1;  // position in `down` of V_h
+  for (std::size_t i = 0; i < down.size() && is_hunting(point_of(*down[i]), o); ++i) lowest = static_cast<long>(i);
+  const std::string chain_csv = points_csv + ".chain.csv";
+  std::vector<SweepResult> chain = read_finished_points(chain_csv, columns.size());
+  if (lowest >= 0 && static_cast<std::size_t>(lowest) + 1 < down.size()) {
+    std::string from = down[static_cast<std::size_t>(lowest)]->key;
+    if (!states.find(from))
+      spdlog::warn("bifurcation sweep: the run at {:.1f} km/h stopped, so no limit cycle to follow below it",
+                   down[static_cast<std::size_t>(lowest)]->values[0] * 3.6);
+    for (std::size_t i = static_cast<std::size_t>(lowest) + 1; i < down.size() && states.find(from); ++i) {
+      SweepResult& target = *down[i];
+      const double v = target.values[0];
+      const std::string key = "chain:" + target.key.substr(target.key.find(':') + 1);
+      auto done = std::find_if(chain.begin(), chain.end(), [&](const SweepResult& r) { return r.key == key; });
+      if (done == chain.end() || (is_hunting(point_of(*done), o) && !point_of(*done).failed && !states.find(key))) {
+        spdlog::info("bifurcation sweep: following the branch down to {:.1f} km/h", v * 3.6);
+        Eigen::VectorXd x_end;
+        const PointOutcome r = run_point(scenario, v, *states.find(from), o, &x_end);
+        if (!r.failed) states.put(key, x_end);
+        if (done != chain.end()) chain.erase(done);
+        chain.push_back({target.index, key, values(v, 1.0, r)});
+        write_sweep_file(chain_csv, columns, chain);
+        done = chain.end() - 1;
       }
-      return values(v, 1.0, r);
-    }, so);
-  } catch (...) {
-    down_error = std::current_exception();
+      target.key = done->key;
+      target.values = done->values;
+      const BifurcationPoint p = point_of(*done);
+      if (!is_hunting(p, o) || p.failed) break;
+      from = key;
+    }
   }
-  if (up_thread.joinable()) up_thread.join();
-  else if (!up.empty() && !down_error) run_up();
-  if (down_error) std::rethrow_exception(down_error);
-  if (up_error) std::rethrow_exception(up_error);
-  rows.insert(rows.end(), up_rows.begin(), up_rows.end());
   write_sweep_file(points_csv, columns, rows);
   return collect(rows, o);
 }

@@ -45,10 +45,11 @@ struct BifurcationOptions {
   // peaks over the tail) is a transient, not a limit cycle, whatever its amplitude.
   double decay_tolerance = 0.05;
   bool up_branch = true;             // also sweep the weakly disturbed branch
-  // Path following on the down branch: each speed starts from the final state
-  // of the next higher one (the top one from the large disturbance), so the
-  // branch is followed down to its fold whatever the disturbance; serial for
-  // the down branch (the up branch still runs in parallel), threads only.
+  // Path following on the down branch: after the parallel sweep, the speeds
+  // below the lowest hunting one are run one after the other, each started
+  // from the final state of the speed above, until the limit cycle is lost, so
+  // the branch is followed down to its fold whatever the disturbance. Threads
+  // only (the final states are kept in one file).
   bool continuation = false;
   int threads = 0;                   // 0: all cores
   bool use_mpi = false;
@@ -61,6 +62,7 @@ struct BifurcationPoint {
   double frequency = 0.0;            // of the wheelset with the largest amplitude [Hz]
   double growth = 0.0;               // relative amplitude change over the tail
   bool failed = false;               // run stopped (e.g. derailment) -> treated as hunting
+  bool continued = false;            // down branch: started from the limit cycle of the speed above
 };
 
 struct BifurcationResult {
