@@ -103,7 +103,8 @@ ContactForces Fastrip::solve(const ContactInput& in, TangentialWorkspace* /*ws*/
     }
     const double qs = gj / aj;  // mu p0_j / a_j
     const double sgx = spx * y;  // longitudinal spin slip rate on this strip
-    double sx = 0.0, sy = 0.0, xprev = aj;
+    double sx = 0.0, sy = 0.0, xprev = aj, qprev = 0.0;
+    bool slides = false;  // the total traction has reached the bound ahead on this strip
     double fx = 0.0, fy = 0.0, mz = 0.0, adh = 0.0;
     // Adhesion-ellipse integrals at the upper boundary of the current element
     // (the leading edge x = a_j sits at u = +ar); reused element to element.
@@ -139,10 +140,14 @@ ContactForces Fastrip::solve(const ContactInput& in, TangentialWorkspace* /*ws*/
       // Spin, FASTSIM-like (step 4), on top of the strip traction; then the bound.
       sx += sgx * dx;
       sy -= spy * xm * dx;
-      if (W > 0.0 && x < d - ar) {  // the strip slides here: the creepage pulls as in FASTSIM
-        sx -= cx * dx;
-        sy -= cy * dx;
+      if (slides) {
+        // Behind the first point where the total traction reached the bound the
+        // strip slides: no more strip-theory increments, the creepage pulls as in
+        // FASTSIM (step 4). Without spin this never happens (q <= mu p).
+        sx -= (q - qprev) * ex + cx * dx;
+        sy -= (q - qprev) * ey + cy * dx;
       }
+      qprev = q;
       double tx = q * ex + sx, ty = q * ey + sy;
       const double g = gj * sqc_[kk];
       const double t2 = tx * tx + ty * ty;
@@ -152,6 +157,7 @@ ContactForces Fastrip::solve(const ContactInput& in, TangentialWorkspace* /*ws*/
         ty *= s;
         sx = tx - q * ex;
         sy = ty - q * ey;
+        slides = true;
       } else if (x >= d - ar) {
         adh += w;
       }

@@ -35,20 +35,29 @@
 //    centres,  s <- s + (phi y_j, -phi x_mid) dx / L3,
 //    added to the strip-theory traction q e, and the total is returned
 //    radially onto the elliptic traction bound mu p when it exceeds it (the
-//    excess is removed from s). In the strip's slip zone (behind its adhesion
-//    zone) the creepage also pulls, as in FASTSIM: s <- s - (xi/L1, eta/L2) dx
-//    with Kalker's L1 = 8a/(3 G C11 k11), L2 = 8a/(3 G C22 k22). Without it the
-//    saturated strip traction (capped at mu p) could not hold its direction
-//    against the accumulated spin traction, and creepage + spin near
-//    saturation lost up to 86 % of the force (73 % error against MIM); with
-//    pure creepage the pull is parallel to e and changes nothing. Without
-//    spin s stays zero and the strip solution is reproduced exactly; with pure
-//    spin the model is FASTSIM with the elliptic bound.
+//    excess is removed from s).
+//    Slip zone with spin: a strip slides from the first point (seen from the
+//    leading edge) where the TOTAL traction q e + s reaches the bound, not from
+//    Carter's pure-creepage split point d - a'. Behind that point the strip
+//    theory adds nothing more (its increments q(x) - q(x_prev) are dropped) and
+//    the total is marched as in FASTSIM: spin increments as above plus the
+//    creepage pull s <- s - (xi/L1, eta/L2) dx with Kalker's
+//    L1 = 8a/(3 G C11 k11), L2 = 8a/(3 G C22 k22), then the bound again.
+//    Without spin q <= mu p everywhere, the bound is never hit and Carter's
+//    solution is reproduced exactly; with pure spin q = 0 and the model is
+//    FASTSIM with the elliptic bound. Without any pull the saturated strip
+//    traction could not hold its direction against the accumulated spin
+//    traction (creepage + spin near saturation lost up to 86 % of the force).
 //    (Tried and rejected: spin's longitudinal slip -phi y_j inside the strip
-//    theory, or a separate flexibility calibrated on C33. Against CONTACT's
-//    exact pure-spin curve both were worse than the single L3. Also the pull
-//    wherever the total traction slides, not only in the strip's slip zone:
-//    worse with longitudinal creepage + spin, 24 % against 16 %.)
+//    theory, or a separate flexibility calibrated on C33: worse against
+//    CONTACT's exact pure-spin curve than the single L3. Pulling only in
+//    Carter's slip zone behind d - a' and keeping the strip-theory increments
+//    there (the previous model): creepage + spin max 16.2 %, mean 7.6 %, worse
+//    than FASTSIM, because the pure-creepage strip traction kept priority over
+//    spin. Keeping the strip-theory increments in Carter's adhesion zone after
+//    the bound is hit: max 12.0 %, mean 5.5 %, but worse with longitudinal
+//    creepage + spin (11 - 12 % against 4 - 11 %).
+//    Spreading spin's longitudinal slip into the strip's split only: no gain.)
 // 5. Integration: the strip-theory traction is integrated analytically over
 //    each element (force and first moment), the spin correction by the
 //    midpoint rule at element centres; strips by the midpoint rule. The
@@ -59,13 +68,17 @@
 //
 // Accuracy (measured, see tests/contact_fastsim and `railsim compare-contact
 // scenarios/compare_contact_cases.yaml`, MIM grid 60 as reference, error of the
-// force vector relative to |F_MIM|): pure creepage max 2.5 % (FASTSIM 6.0 %),
-// pure spin max 10.8 % (FASTSIM 11.3 %), creepage + spin max 16.2 %, mean 7.6 %
-// (FASTSIM 15.2 %, 6.6 %). KNOWN WEAKNESS: with creepage combined with spin
-// FaStrip is still not closer than FASTSIM (better on 3 of 12 combined cases):
-// the strip's adhesion zone ignores spin. The coupling of spin and strip
-// theory in Sichani's paper is presumably different; until it is obtained,
-// prefer fastsim (or mim_table) when spin and creepage combine.
+// force vector relative to |F_MIM|): pure creepage max 2.5 %, mean 0.65 %
+// (FASTSIM 6.0 %, 3.1 %), pure spin max 10.8 %, mean 3.6 % (FASTSIM 11.3 %,
+// 3.9 %), creepage + spin max 13.6 %, mean 5.5 % (FASTSIM 15.2 %, 6.6 %),
+// closer than FASTSIM on 8 of the 12 combined cases; on the failure map
+// (lateral creepage x spin, 8 x 8, tread patch) max 6.3 % (FASTSIM 6.7 %).
+// LIMITS: the wide patch (a/b = 0.4) with spin stays at 10 - 14 % (as FASTSIM:
+// the Winkler spin part underestimates the lateral spin force there); small
+// lateral creepage + spin on it is worse than FASTSIM (11.5 % against 6.6 %).
+// The combined full-slip cases are FASTSIM's figures to 0.1 % (the strips
+// slide almost from the leading edge). Mz with spin is no better than
+// FASTSIM's. The coupling in Sichani's paper is presumably different.
 #pragma once
 
 #include <memory>
