@@ -129,7 +129,8 @@ std::vector<Candidate> make_candidates(const CompareArgs& a) {
   std::vector<std::string> names = split_names(a.models);
   const bool explicit_list = !names.empty();
   if (!explicit_list)
-    for (const auto& e : contact::tangential_models()) names.emplace_back(e.name);
+    for (const auto& e : contact::tangential_models())
+      if (!e.tabulated) names.emplace_back(e.name);  // mim_table: below, when cached
   std::set<std::string> seen;
   for (const auto& n : names)
     if (!seen.insert(n).second) throw InputError("--models: model '" + n + "' listed twice");
@@ -140,7 +141,7 @@ std::vector<Candidate> make_candidates(const CompareArgs& a) {
       for (const auto& e : contact::tangential_models()) known = known || n == e.name;
       if (!known)
         throw InputError("--models: unknown contact model '" + n + "' (known models: " +
-                         contact::tangential_model_names() + ", " + kMimTable + ")");
+                         contact::tangential_model_names() + ")");
     }
   const bool table_wanted = seen.count(kMimTable) > 0;
   std::vector<Candidate> out;
@@ -442,7 +443,7 @@ void register_compare_contact(CLI::App& app, CommandRunner& run) {
   cmd->add_option("--out", a->out, "Output folder")->required();
   cmd->add_option("--models", a->models,
                   "Models to compare, comma-separated (default: all registered, plus mim_table when cached): " +
-                      contact::tangential_model_names() + ", mim_table");
+                      contact::tangential_model_names());
   cmd->add_option("--reference-grid", a->reference_grid, "MIM reference: elements across the minor axis")
       ->check(CLI::Range(8, 400))
       ->capture_default_str();

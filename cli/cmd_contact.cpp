@@ -10,6 +10,7 @@
 #include "cli/support_contact_cases.hpp"
 #include "contact/reduction.hpp"
 #include "contact/registry.hpp"
+#include "core/errors.hpp"
 
 namespace railsim::cli {
 
@@ -22,15 +23,23 @@ struct ContactOptions {
   std::string reduction;
   int grid = 0;
   double tolerance = 0.0;
+  std::string cache_dir;
 };
 
 int run_contact(const ContactOptions& o) {
+  bool known = false;
+  for (const auto& e : contact::tangential_models()) known = known || o.model == e.name;
+  if (!known)
+    throw InputError("--model: unknown contact model '" + o.model + "' (known models: " +
+                     contact::tangential_model_names() + ")");
+  // Inputs first: a cached-table model may take a while to build on first use.
+  ContactCaseSet set = load_contact_cases(o.cases);
+  if (!o.reduction.empty()) set_reduction(set, contact::parse_reduction(o.reduction, "--reduction"));
   contact::TangentialModelOptions mo;
   mo.grid = o.grid;
   mo.tolerance = o.tolerance;
-  const auto model = contact::make_tangential_model(o.model, mo);  // unknown -> InputError with the list
-  ContactCaseSet set = load_contact_cases(o.cases);
-  if (!o.reduction.empty()) set_reduction(set, contact::parse_reduction(o.reduction, "--reduction"));
+  mo.cache_dir = o.cache_dir;
+  const auto model = contact::make_tangential_model(o.model, mo);
   const auto ws = model->make_workspace();
   results::CsvWriter csv(o.out, contact_csv_columns());
   int invalid = 0;
@@ -62,6 +71,9 @@ void register_contact(CLI::App& app, CommandRunner& run) {
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--tolerance", opts->tolerance, "Solver tolerance of iterative models (0 = model default)")
       ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--cache-dir", opts->cache_dir,
+                  "Table cache folder of cached-table models (mim_table; default $RAILSIM_CACHE_DIR, "
+                  "$XDG_CACHE_HOME/railsim or ~/.cache/railsim)");
   cmd->callback([&run, opts] { run = [opts] { return run_contact(*opts); }; });
 }
 

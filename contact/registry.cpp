@@ -17,6 +17,7 @@ std::unique_ptr<TangentialModel> make_polach(const TangentialModelOptions&);
 std::unique_ptr<TangentialModel> make_fastsim(const TangentialModelOptions&);
 std::unique_ptr<TangentialModel> make_fastrip(const TangentialModelOptions&);
 std::unique_ptr<TangentialModel> make_mim(const TangentialModelOptions&);
+std::unique_ptr<TangentialModel> make_mim_table(const TangentialModelOptions&);
 
 const std::vector<TangentialModelEntry>& tangential_models() {
   static const std::vector<TangentialModelEntry> table = {
@@ -30,6 +31,9 @@ const std::vector<TangentialModelEntry>& tangential_models() {
       {"fastsim", "Kalker's FASTSIM (simplified theory), elliptic traction bound, grid N x N (default 20)", &make_fastsim},
       {"fastrip", "FaStrip-type: strip theory per strip + FASTSIM-like spin, grid N x N (default 20)", &make_fastrip},
       {"mim", "exact boundary-element steady rolling (Kalker's MIM, FFT), grid N across minor axis (default 40)", &make_mim},
+      {"mim_table", "exact MIM results tabulated over a/b and normalised creepages/spin (USETAB-like), cubic "
+                    "interpolation; the table is built once (13,851 solves) and cached",
+       &make_mim_table, true},
   };
   return table;
 }

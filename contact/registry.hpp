@@ -25,6 +25,10 @@ struct TangentialModelEntry {
   const char* name;
   const char* description;
   TangentialFactory make;
+  // Built from a table that is computed once and cached on disk (mim_table:
+  // about 40 s on two cores the first time). Commands that run every model by
+  // default (demo, compare-contact, benchmarks) leave these out unless asked.
+  bool tabulated = false;
 };
 
 // Every registered model, in the order they are listed to users.

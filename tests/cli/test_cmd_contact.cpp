@@ -127,3 +127,39 @@ TEST_CASE("railsim contact bad inputs give file:line:key messages and exit 2", "
   CHECK(r.exit_code == 2);
   CHECK(r.output.find("cannot open") != std::string::npos);
 }
+
+// mim_table through `railsim contact`: the table is built once in --cache-dir
+// (a coarse MIM grid 8 keeps the build to a few seconds), then reused; its
+// forces agree with the live solver at the same grid within 2 % of mu Fz (the
+// table's interpolation error between nodes, tested to 2 % in
+// tests/contact_fastsim/test_mim_table.cpp, plus the different alignment of a
+// coarse grid on the table's reference patch and on the real one; measured
+// 1.6 % on scenarios/contact_cases.yaml).
+TEST_CASE("railsim contact --model mim_table builds its table once and matches mim", "[cli][contact]") {
+  const std::string dir = railsim::test::temp_dir("cli_contact_mim_table");
+  const std::string cases = railsim::test::source_path("scenarios/contact_cases.yaml");
+  const std::string cache = dir + "/cache";
+  const std::string args = " --grid 8 --cache-dir '" + cache + "'";
+  const auto first = run_railsim("contact '" + cases + "' --model mim_table --out '" + dir + "/t1.csv'" + args);
+  INFO(first.output);
+  REQUIRE(first.exit_code == 0);
+  CHECK(first.output.find("building") != std::string::npos);
+  const auto second = run_railsim("contact '" + cases + "' --model mim_table --out '" + dir + "/t2.csv'" + args);
+  REQUIRE(second.exit_code == 0);
+  CHECK(second.output.find("building") == std::string::npos);  // read from the cache
+  const auto live = run_railsim("contact '" + cases + "' --model mim --grid 8 --out '" + dir + "/m.csv'");
+  REQUIRE(live.exit_code == 0);
+  const auto t1 = railsim::results::read_csv(dir + "/t1.csv");
+  const auto t2 = railsim::results::read_csv(dir + "/t2.csv");
+  const auto m = railsim::results::read_csv(dir + "/m.csv");
+  REQUIRE(t1.rows.size() == 7);
+  REQUIRE(m.rows.size() == 7);
+  for (std::size_t i = 0; i < t1.rows.size(); ++i) {
+    INFO(t1.rows[i][0]);
+    CHECK(t1.rows[i][t1.column("model")] == "mim_table");
+    CHECK(t2.number(i, "Fx") == t1.number(i, "Fx"));
+    CHECK(t2.number(i, "Fy") == t1.number(i, "Fy"));
+    const double muN = 0.3 * m.number(i, "Fz");
+    CHECK(std::hypot(t1.number(i, "Fx") - m.number(i, "Fx"), t1.number(i, "Fy") - m.number(i, "Fy")) < 0.02 * muN);
+  }
+}
