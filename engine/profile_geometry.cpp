@@ -18,7 +18,11 @@ contact::ContactTable make_table(const ProfileGeometryParams& p) {
   const contact::Profile rail = contact::read_profile(p.rail, contact::ProfileKind::rail);
   p.setup.validate();
   p.grid.validate();
-  const contact::WheelRailGeometry geometry(wheel, rail, p.setup);
+  // Second points up to 1 mm of vertical gap: they close under the loads of
+  // flange contact (the Hertz approach is ~0.1 mm at 100 kN).
+  contact::SearchOptions search;
+  search.second_gap_max = 1.0e-3;
+  const contact::WheelRailGeometry geometry(wheel, rail, p.setup, search);
   bool cached = false;
   auto table = contact::ContactTable::cached(geometry, wheel, rail, p.grid, p.cache_dir, &cached);
   spdlog::debug("profile geometry {} on {}: contact table {} ({} rows)", p.wheel, p.rail,
@@ -43,21 +47,50 @@ ProfileGeometry::ProfileGeometry(const ProfileGeometryParams& params, const cont
   description_ = buf;
 }
 
-void ProfileGeometry::evaluate(double s, WheelContact& out) const {
-  contact::TableSample t;
-  table_.lookup(s, t);
-  const contact::ContactPoint& p = t.wheel[static_cast<int>(contact::Side::left)].p[0];
+namespace {
+
+// One tabulated point as the engine sees it, with its Hertz patch and
+// approach at the reference load.
+void fill(const contact::ContactPoint& p, double s, const contact::Material& material, WheelContact& out) {
   out = WheelContact{};
   out.rolling_radius = p.radius;
   out.contact_angle = p.angle;
   out.lateral = p.y - s;
   out.A = p.A;
   out.B = p.B;
-  const contact::HertzPatch h = contact::hertz_from_load(p.A, p.B, kReferenceLoad, material_);
+  const contact::HertzPatch h = contact::hertz_from_load(p.A, p.B, ProfileGeometry::kReferenceLoad, material);
   out.semi_a = h.a;
   out.semi_b = h.b;
-  out.N0 = kReferenceLoad;
+  out.N0 = ProfileGeometry::kReferenceLoad;
   out.q0 = h.approach;
+}
+
+}  // namespace
+
+void ProfileGeometry::evaluate(double s, WheelContact& out) const {
+  contact::TableSample t;
+  table_.lookup(s, t);
+  fill(t.wheel[static_cast<int>(contact::Side::left)].p[0], s, material_, out);
+}
+
+void ProfileGeometry::evaluate_point(double s, int k, WheelContact& out) const {
+  if (k == 0) return evaluate(s, out);
+  contact::TableSample t;
+  table_.lookup(s, t);
+  const contact::WheelContact& w = t.wheel[static_cast<int>(contact::Side::left)];
+  if (k >= w.n) {
+    out = WheelContact{};  // N0 = 0: no such point at this shift
+    return;
+  }
+  WheelContact main;
+  fill(w.p[0], s, material_, main);
+  fill(w.p[static_cast<std::size_t>(k)], s, material_, out);
+  // Shared vertical approach of the wheel (see the header): the reference
+  // normal approach of this point is q_ref = q0_main cos(d_k)/cos(d_0) - g_k,
+  // written as the offset gap = q0_k - q_ref of the engine's load law.
+  const double q_ref = main.q0 * std::cos(out.contact_angle) / std::cos(main.contact_angle) -
+                       w.p[static_cast<std::size_t>(k)].gap;
+  out.gap = out.q0 - q_ref;
 }
 
 }  // namespace railsim::engine

@@ -13,8 +13,17 @@
 // from A; Hertz 1882, via contact/hertz.hpp) and approach at the reference load
 // N0 = 50 kN; the engine scales them as N^(1/3) and N^(2/3), exactly Hertz for
 // fixed curvatures. Kalker's coefficients follow from a/b in the coupling.
-// Only the main (touching) point is used: two-point contact is reported by
-// `railsim geometry` but not yet coupled (one point per wheel).
+// Two points per wheel (points() = 2) for the full wheelset model: the main
+// (touching) point and, where the profiles have a second local minimum of the
+// gap within 1 mm (tread and flange near the flange jump), that second point
+// with its own radius, angle, curvatures and Hertz patch. Both share the
+// wheel's vertical approach: at the reference state (main point at its Hertz
+// approach q0 under N0) the second point's normal approach is
+//   q_2 = q0 cos(delta_2) / cos(delta_0) - g_2
+// with g_2 its undeformed normal gap; it carries N_2 = K_2 (q_2 + dq_2)^{3/2}
+// (Hertz, its own K_2 = N0 / q0_2^{3/2}) once closed, so the wheel's load
+// passes continuously from tread to flange. The lateral (quasi-static) model
+// uses the main point only. Wheelset yaw is not in the table (zero yaw).
 // Units SI (m, rad, 1/m, N).
 #pragma once
 
@@ -42,6 +51,8 @@ class ProfileGeometry final : public ContactGeometry {
   // profiles or set-up.
   ProfileGeometry(const ProfileGeometryParams& params, const contact::Material& material);
   void evaluate(double s, WheelContact& out) const override;
+  int points() const override { return 2; }
+  void evaluate_point(double s, int k, WheelContact& out) const override;
   double r0() const override { return r0_; }
   double l0() const override { return l0_; }
   double max_shift() const override { return s_max_; }

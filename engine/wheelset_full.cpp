@@ -66,7 +66,7 @@ bool wheelset_full_forces(const Model& model, Data& d, int w, const double* x, d
       } else {
         dq += (r - geo.r0()) * cd;
       }
-      const double ratio = 1.0 + dq / q0;
+      const double ratio = 1.0 + (dq - c.gap) / q0;
       const double N = ratio > 0 ? N0 * ratio * std::sqrt(ratio) : 0.0;
       const contact::Creepages cr = wheel_creepages(k, c, side);
       const contact::ContactForces cf =

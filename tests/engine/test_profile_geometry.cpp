@@ -3,15 +3,19 @@
 // CONTACT has it, the Hertz patch scaling, and scenario input errors.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 
 #include "contact/geometry/profile.hpp"
 #include "contact/hertz.hpp"
 #include "core/errors.hpp"
+#include "engine/data.hpp"
 #include "engine/analysis/critical_speed.hpp"
 #include "engine/profile_geometry.hpp"
 #include "engine/scenario.hpp"
+#include "engine/system.hpp"
+#include "engine_test_support.hpp"
 #include "test_support.hpp"
 
 using namespace railsim;
@@ -103,4 +107,75 @@ TEST_CASE("profile geometry in a scenario: runs, and bad input names the key", "
   CHECK_THROWS_WITH(load_scenario(with_geometry("{type: profiles, wheel: S1002, shape: round}")),
                     Catch::Contains("shape"));
   CHECK_THROWS_AS(load_scenario(with_geometry("{type: profiles, wheel: no_such_profile}")), InputError);
+}
+
+// Two-point contact (full wheelset model). S1002 on UIC60 at 1:40 has a second
+// local minimum of the gap on the tread between 4.0 and 5.25 mm of shift
+// (`railsim geometry`; the touching point jumps from ~7 to ~17 deg contact
+// angle near 4.9 mm), and none at the flange jump (6.25 mm, where the point
+// slides continuously through the flange root). Across that tread jump the
+// wheel load must pass from one point to the other through a range where both
+// carry load, instead of the single point's jump of the lateral force. The
+// left wheel is held where it carries W = 50 kN (bisection on the wheelset
+// height); spin and creepages are off, so the lateral force is the normal
+// forces' component alone, Y = -sum N_k sin(delta_k) (one point: -W tan delta).
+TEST_CASE("profile geometry: two-point contact shares the load across the tread jump", "[engine][geometry]") {
+  const std::string dir = test::temp_dir("profile_geometry_two_point");
+  const Scenario sc = test::scenario_from_text(
+      "vehicle: vehicles/single_wheelset.yaml\n"
+      "track: {segments: [{type: straight, length: 1000}]}\n"
+      "speed: 30\nduration: 1\nwheelset_model: full\n"
+      "contact:\n  geometry: {type: profiles, wheel: S1002, rail: UIC60, inclination: 1/40, cache_dir: " + dir + "}\n"
+      "  tangential: linear\n  spin: false\n"
+      "  material: {E: 2.1e11, nu: 0.28, mu: 0.3}\n");
+  const auto& geo = *sc.model.wheelsets[0].geometry;
+  REQUIRE(geo.points() == 2);
+  int lat = -1, vert = -1;
+  for (int i = 0; i < sc.model.n_states; ++i) {
+    if (sc.model.state_names[i] == "ws1.lateral") lat = i;
+    if (sc.model.state_names[i] == "ws1.vertical") vert = i;
+  }
+  REQUIRE(lat >= 0);
+  REQUIRE(vert >= 0);
+  const double W = 50e3;
+  Data d(sc.model);
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(sc.model.n_states), xd(x.size());
+  auto left_at = [&](double s, double z) {
+    x[lat] = s;
+    x[vert] = z;
+    rhs_or_throw(sc.model, d, 0.0, x.data(), xd.data());
+    return d.wheel[0];
+  };
+  // Wheel held at Q = W: bisection on the height (Q falls as the wheel rises).
+  auto loaded = [&](double s) {
+    double lo = -2e-3, hi = 2e-3;
+    for (int it = 0; it < 60; ++it) {
+      const double z = 0.5 * (lo + hi);
+      (left_at(s, z).Q > W ? lo : hi) = z;
+    }
+    return left_at(s, 0.5 * (lo + hi));
+  };
+  double step_two = 0.0, step_one = 0.0, prev_two = 0.0, prev_one = 0.0;
+  int shared = 0;
+  for (int i = 0; i <= 320; ++i) {
+    const double s = 3.9e-3 + i * 5e-6;  // 3.9 .. 5.5 mm in 5 um steps
+    const WheelOutput w = loaded(s);
+    REQUIRE(w.Q == Approx(W).epsilon(1e-6));
+    WheelContact p0;
+    geo.evaluate_point(s, 0, p0);
+    const double y_one = -W * std::tan(p0.contact_angle);
+    // Both points loaded: the lateral force differs from the main point's alone.
+    if (std::abs(w.Y - y_one) > 0.01 * W) ++shared;
+    if (i > 0) {
+      step_two = std::max(step_two, std::abs(w.Y - prev_two));
+      step_one = std::max(step_one, std::abs(y_one - prev_one));
+    }
+    prev_two = w.Y;
+    prev_one = y_one;
+  }
+  INFO("largest change of Y per 5 um: two points " << step_two / W << " W, main point alone " << step_one / W
+                                                   << " W; shifts with both points loaded: " << shared);
+  CHECK(step_one > 0.1 * W);  // the jump of the single point
+  CHECK(shared >= 40);        // >= 0.2 mm of shared load
+  CHECK(step_two < 0.25 * step_one);
 }
