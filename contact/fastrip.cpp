@@ -173,23 +173,12 @@ ContactForces Fastrip::solve(const ContactInput& in, TangentialWorkspace* /*ws*/
     area += 2.0 * aj * dy;
     stick += adh * dy;
   }
-  out.Fx = Fx;
-  out.Fy = Fy;
-  out.Mz = Mz;
-  out.stick_fraction = area > 0.0 ? stick / area : 1.0;
-  if (!std::isfinite(Fx) || !std::isfinite(Fy) || !std::isfinite(Mz))
-    throw NumericalError("fastrip: non-finite creep force (a = " + std::to_string(a) +
-                         " m, b = " + std::to_string(b) + " m, Fz = " + std::to_string(Fz) + " N)");
-  return out;
+  return strip_model_result("fastrip", in, Fx, Fy, Mz, stick, area);
 }
 
 std::unique_ptr<TangentialModel> make_fastrip(const TangentialModelOptions& options) {
   FastripOptions o;
-  if (options.grid != 0) {
-    if (options.grid < 2 || options.grid > 1000)
-      throw InputError("fastrip: grid must be in [2, 1000] elements (got " + std::to_string(options.grid) + ")");
-    o.nx = o.ny = options.grid;
-  }
+  o.nx = o.ny = StripGrid::size_option(options, "fastrip", o.nx);
   return std::make_unique<Fastrip>(o);
 }
 

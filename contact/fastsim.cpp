@@ -24,6 +24,28 @@ std::vector<double> nodes_descending(int n, GridSpacing s) {
 }
 }  // namespace
 
+int StripGrid::size_option(const TangentialModelOptions& options, const char* model, int fallback) {
+  if (options.grid == 0) return fallback;
+  if (options.grid < 2 || options.grid > 1000)
+    throw InputError(std::string(model) + ": grid must be in [2, 1000] elements (got " +
+                     std::to_string(options.grid) + ")");
+  return options.grid;
+}
+
+ContactForces strip_model_result(const char* model, const ContactInput& in, double Fx, double Fy, double Mz,
+                                 double stick_area, double area) {
+  if (!std::isfinite(Fx) || !std::isfinite(Fy) || !std::isfinite(Mz))
+    throw NumericalError(std::string(model) + ": non-finite creep force (a = " + std::to_string(in.patch.a) +
+                         " m, b = " + std::to_string(in.patch.b) + " m, Fz = " + std::to_string(in.patch.Fz) +
+                         " N)");
+  ContactForces out;
+  out.Fx = Fx;
+  out.Fy = Fy;
+  out.Mz = Mz;
+  out.stick_fraction = area > 0.0 ? stick_area / area : 1.0;
+  return out;
+}
+
 StripGrid StripGrid::make(int nx, int ny, GridSpacing spacing_x, GridSpacing spacing_y) {
   if (nx < 2 || ny < 2 || nx > 100000 || ny > 100000)
     throw InputError("strip grid: expected at least 2 elements per strip and 2 strips (got " +
@@ -157,23 +179,12 @@ ContactForces Fastsim::solve(const ContactInput& in, TangentialWorkspace* /*ws*/
     area += 2.0 * aj * dy;
     stick += adh * dy;
   }
-  out.Fx = Fx;
-  out.Fy = Fy;
-  out.Mz = Mz;
-  out.stick_fraction = area > 0.0 ? stick / area : 1.0;
-  if (!std::isfinite(Fx) || !std::isfinite(Fy) || !std::isfinite(Mz))
-    throw NumericalError("fastsim: non-finite creep force (a = " + std::to_string(a) +
-                         " m, b = " + std::to_string(b) + " m, Fz = " + std::to_string(Fz) + " N)");
-  return out;
+  return strip_model_result("fastsim", in, Fx, Fy, Mz, stick, area);
 }
 
 std::unique_ptr<TangentialModel> make_fastsim(const TangentialModelOptions& options) {
   FastsimOptions o;  // 20 x 20
-  if (options.grid != 0) {
-    if (options.grid < 2 || options.grid > 1000)
-      throw InputError("fastsim: grid must be in [2, 1000] elements (got " + std::to_string(options.grid) + ")");
-    o.nx = o.ny = options.grid;
-  }
+  o.nx = o.ny = StripGrid::size_option(options, "fastsim", o.nx);
   return std::make_unique<Fastsim>(o);
 }
 

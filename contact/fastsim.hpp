@@ -66,7 +66,16 @@ struct StripGrid {
 
   // Build; nx, ny >= 2 (InputError otherwise).
   static StripGrid make(int nx, int ny, GridSpacing spacing_x, GridSpacing spacing_y);
+  // The registry's grid option for a strip model: N gives N x N elements, N in
+  // [2, 1000] (InputError naming `model` otherwise); 0 keeps `fallback`.
+  static int size_option(const TangentialModelOptions& options, const char* model, int fallback);
 };
+
+// Result of a strip model from its sums over the strips (forces, moment, stick
+// and total area); NumericalError naming the model and the patch when a force
+// is not finite.
+ContactForces strip_model_result(const char* model, const ContactInput& in, double Fx, double Fy, double Mz,
+                                 double stick_area, double area);
 
 struct FastsimOptions {
   int nx = 20;  // elements per strip (rolling direction)
