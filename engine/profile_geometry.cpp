@@ -86,10 +86,14 @@ void ProfileGeometry::evaluate_point(double s, int k, WheelContact& out) const {
   fill(w.p[0], s, material_, main);
   fill(w.p[static_cast<std::size_t>(k)], s, material_, out);
   // Shared vertical approach of the wheel (see the header): the reference
-  // normal approach of this point is q_ref = q0_main cos(d_k)/cos(d_0) - g_k,
-  // written as the offset gap = q0_k - q_ref of the engine's load law.
-  const double q_ref = main.q0 * std::cos(out.contact_angle) / std::cos(main.contact_angle) -
-                       w.p[static_cast<std::size_t>(k)].gap;
+  // normal approach of this point is q_ref = (q0_main / cos(d_0) - v_k) cos(d_k)
+  // with v_k its vertical gap above the main point's (the table's gaps are
+  // normal gaps; between rows the main point's own gap may be > 0), written as
+  // the offset gap = q0_k - q_ref of the engine's load law.
+  const contact::ContactPoint& p0 = w.p[0];
+  const contact::ContactPoint& pk = w.p[static_cast<std::size_t>(k)];
+  const double v = pk.gap / std::cos(pk.angle) - p0.gap / std::cos(p0.angle);
+  const double q_ref = (main.q0 / std::cos(main.contact_angle) - v) * std::cos(out.contact_angle);
   out.gap = out.q0 - q_ref;
 }
 

@@ -13,17 +13,20 @@
 // from A; Hertz 1882, via contact/hertz.hpp) and approach at the reference load
 // N0 = 50 kN; the engine scales them as N^(1/3) and N^(2/3), exactly Hertz for
 // fixed curvatures. Kalker's coefficients follow from a/b in the coupling.
-// Two points per wheel (points() = 2) for the full wheelset model: the main
-// (touching) point and, where the profiles have a second local minimum of the
-// gap within 1 mm (tread and flange near the flange jump), that second point
-// with its own radius, angle, curvatures and Hertz patch. Both share the
+// Two points per wheel (points() = 2): the main (touching) point and, where
+// the profiles have a second local minimum of the gap within 1 mm (S1002 on
+// UIC60 at 1:40: near 0 mm and 4.0-5.25 mm, the tread jump; none at the
+// flange jump, where the point slides through the flange root), that second
+// point with its own radius, angle, curvatures and Hertz patch. Both share the
 // wheel's vertical approach: at the reference state (main point at its Hertz
 // approach q0 under N0) the second point's normal approach is
-//   q_2 = q0 cos(delta_2) / cos(delta_0) - g_2
-// with g_2 its undeformed normal gap; it carries N_2 = K_2 (q_2 + dq_2)^{3/2}
-// (Hertz, its own K_2 = N0 / q0_2^{3/2}) once closed, so the wheel's load
-// passes continuously from tread to flange. The lateral (quasi-static) model
-// uses the main point only. Wheelset yaw is not in the table (zero yaw).
+//   q_2 = (q0 / cos(delta_0) - v_2) cos(delta_2)
+// with v_2 its vertical gap above the main point; it carries
+// N_2 = K_2 (q_2 + dq_2)^{3/2} (Hertz, its own K_2 = N0 / q0_2^{3/2}) once
+// closed, so the wheel's load passes continuously from one point to the other
+// (the table interpolates each point on its own, contact_table.hpp). The
+// lateral (quasi-static) model shares the wheel's load the same way
+// (wheelset_lateral.hpp). Wheelset yaw is not in the table (zero yaw).
 // Units SI (m, rad, 1/m, N).
 #pragma once
 

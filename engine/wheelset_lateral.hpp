@@ -25,8 +25,13 @@
 // with y, and roll). The spin speed is V/r0 (no spin perturbation).
 // Relative lateral motion: y - y_track, y_track = mean of the rails' lateral
 // irregularities. Stops (Data::fail) on wheel lift-off (Q < 0) and when |y|
-// leaves the geometry's range. Uses the first (main) contact point of the
-// geometry only; multi-point tables need the full model.
+// leaves the geometry's range.
+// Several contact points per wheel (profiles geometry, multi-point tables with
+// N0, q0 per point): the wheel's load Q is shared by a common vertical
+// approach change dw, N_k = N0_k (1 + (dw cos(delta_k) - gap_k)/q0_k)^{3/2}
+// (the full model's load law, wheelset_full.cpp), with dw solved from
+// sum N_k cos(theta_k) = Q (monotone; Newton from above, bisection guard). The
+// split of Q between the wheels uses the main points' lateral positions.
 #pragma once
 
 #include "engine/data.hpp"

@@ -1,6 +1,7 @@
 // Contact table build, cache and lookup (see contact_table.hpp).
 #include "contact/geometry/contact_table.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -8,7 +9,6 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
-#include <algorithm>
 #include <unistd.h>
 
 #include "core/errors.hpp"
@@ -166,19 +166,19 @@ void ContactTable::unpack(const double* a, const double* b, double w, TableSampl
   auto lerp = [w](double x, double y) { return x + w * (y - x); };
   out.roll = lerp(a[1], b[1]);
   out.z = lerp(a[2], b[2]);
-  int col = 3;
+  // A point of row a and one of row b are the same point when they lie within
+  // 1 mm of each other on the wheel, whatever their slots (the slots swap where
+  // the second point becomes the touching one).
+  auto same = [](const double* pa, const double* pb) { return std::abs(pa[2] - pb[2]) < 1e-3; };
   for (std::size_t side = 0; side < 2; ++side) {
+    const int base = 3 + static_cast<int>(side) * kSlots * kPointFields;
     WheelContact& wc = out.wheel[side];
     wc.n = 0;
-    for (int s = 0; s < kSlots; ++s, col += kPointFields) {
-      const double* pa = a + col;
-      const double* pb = b + col;
-      // Same branch when both rows have the point and it moved less than 1 mm on the wheel.
-      const bool both = pa[0] > 0.0 && pb[0] > 0.0 && std::abs(pa[2] - pb[2]) < 1e-3;
-      const double* src = (w < 0.5) ? pa : pb;
-      if (!both && !(src[0] > 0.0)) continue;
+    bool used_b[kSlots] = {};
+    auto add = [&](const double* pa, const double* pb) {
+      if (wc.n == WheelContact::kMaxPoints) return;
       ContactPoint& p = wc.p[static_cast<std::size_t>(wc.n++)];
-      if (both) {
+      if (pa && pb) {
         p.y = lerp(pa[1], pb[1]);
         p.y_wheel = lerp(pa[2], pb[2]);
         p.y_rail = lerp(pa[3], pb[3]);
@@ -187,8 +187,9 @@ void ContactTable::unpack(const double* a, const double* b, double w, TableSampl
         p.A = lerp(pa[6], pb[6]);
         p.B = lerp(pa[7], pb[7]);
         p.gap = lerp(pa[8], pb[8]);
-      } else {
-        p.y = src[1] + (out.y - (w < 0.5 ? a[0] : b[0]));
+      } else {  // present in one row only: that row's point, moved with the wheelset
+        const double* src = pa ? pa : pb;
+        p.y = src[1] + (out.y - (pa ? a[0] : b[0]));
         p.y_wheel = src[2];
         p.y_rail = src[3];
         p.radius = src[4];
@@ -199,7 +200,30 @@ void ContactTable::unpack(const double* a, const double* b, double w, TableSampl
       }
       p.x = 0.0;
       p.z = 0.0;
+    };
+    for (int s = 0; s < kSlots; ++s) {
+      const double* pa = a + base + s * kPointFields;
+      if (!(pa[0] > 0.0)) continue;
+      const double* match = nullptr;
+      for (int t = 0; t < kSlots && !match; ++t) {
+        const double* pb = b + base + t * kPointFields;
+        if (!used_b[t] && pb[0] > 0.0 && same(pa, pb)) {
+          match = pb;
+          used_b[t] = true;
+        }
+      }
+      if (match) add(pa, match);
+      else if (w < 0.5) add(pa, nullptr);  // across a jump: the nearest row
     }
+    if (w >= 0.5)
+      for (int t = 0; t < kSlots; ++t) {
+        const double* pb = b + base + t * kPointFields;
+        if (!used_b[t] && pb[0] > 0.0) add(nullptr, pb);
+      }
+    // Touching point first: order by vertical gap (the search's order).
+    std::sort(wc.p.begin(), wc.p.begin() + wc.n, [](const ContactPoint& l, const ContactPoint& r) {
+      return l.gap / std::cos(l.angle) < r.gap / std::cos(r.angle);
+    });
   }
 }
 

@@ -5,9 +5,14 @@
 // Columns per row (SI: m, rad, 1/m): y, roll, z, then per side (left, right)
 // and per point slot (0 = touching point, 1 = second point of two-point
 // contact, NaN when absent): present, y (track), y_wheel, y_rail, radius,
-// angle, A, B, gap. Interpolation is linear in y; across a jump of the
-// contact point (tread <-> flange, |delta y_wheel| > 1 mm between two rows) the
-// nearest row is taken instead, so jumps are never averaged away.
+// angle, A, B, gap. Interpolation is linear in y, point by point: a point of
+// one row and one of the next are the same point when they lie within 1 mm of
+// each other on the wheel, whatever their slots (the slots swap where the
+// second point becomes the touching one, and the interpolated touching point
+// then changes where the interpolated gaps cross); a point without a partner
+// (a jump of the contact point, tread <-> flange, with no second point) is
+// taken from the nearest row, so jumps are never averaged away. Points come
+// out ordered by vertical gap; between rows the first one's gap may be > 0.
 // Cache: file contact_table_<16 hex digits>.bin in the cache folder; the key is
 // an FNV-1a hash of a format version, both profiles' points, the track set-up,
 // the y grid and the search options. Default folder: $XDG_CACHE_HOME/railsim, else
