@@ -11,6 +11,7 @@
 //   normal approach q0 [m] (tables), or relative curvatures A, B [1/m] (Hertz).
 #pragma once
 
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -44,6 +45,16 @@ class ContactGeometry {
   virtual void evaluate_point(double s, int k, WheelContact& out) const {
     (void)k;
     evaluate(s, out);
+  }
+  // Roll of the rigid wheelset [rad, positive lifts the left side] at a shift y
+  // toward the LEFT wheel, both wheels touching their rails, when the geometry
+  // knows it (profiles: solved with the rail heads' shape); NaN otherwise, and
+  // the lateral model uses (r_L - r_R)/(a_L + a_R), exact for cones on
+  // knife-edge rails (for S1002/UIC60 1:40 it is 3-8 times the rigid roll
+  // below the flange).
+  virtual double rigid_roll(double y) const {
+    (void)y;
+    return std::numeric_limits<double>::quiet_NaN();
   }
   // Nominal rolling radius at zero shift [m] (sets the nominal spin speed V/r0).
   virtual double r0() const = 0;

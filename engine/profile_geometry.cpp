@@ -73,6 +73,12 @@ void ProfileGeometry::evaluate(double s, WheelContact& out) const {
   fill(t.wheel[static_cast<int>(contact::Side::left)].p[0], s, material_, out);
 }
 
+double ProfileGeometry::rigid_roll(double y) const {
+  contact::TableSample t;
+  table_.lookup(y, t);
+  return t.roll;  // the table's roll: positive lifts the left (+y) side
+}
+
 void ProfileGeometry::evaluate_point(double s, int k, WheelContact& out) const {
   if (k == 0) return evaluate(s, out);
   contact::TableSample t;

@@ -55,6 +55,7 @@ class ProfileGeometry final : public ContactGeometry {
   ProfileGeometry(const ProfileGeometryParams& params, const contact::Material& material);
   void evaluate(double s, WheelContact& out) const override;
   int points() const override { return 2; }
+  double rigid_roll(double y) const override;
   void evaluate_point(double s, int k, WheelContact& out) const override;
   double r0() const override { return r0_; }
   double l0() const override { return l0_; }

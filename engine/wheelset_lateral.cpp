@@ -62,6 +62,7 @@ void share_load(PointLoads& p, double Q, double phi_side) {
 }
 
 double kinematic_roll(const ContactGeometry& geo, double y) {
+  if (const double rigid = geo.rigid_roll(y); std::isfinite(rigid)) return rigid;
   WheelContact l, r;
   geo.evaluate(y, l);
   geo.evaluate(-y, r);

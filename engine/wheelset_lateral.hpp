@@ -17,8 +17,10 @@
 //   yaw moment  -side a (X + Y psi) + Mz cos(delta)
 // (DYTSI's resolution, cooperrider-car.md §7.6) with theta = delta + side phi
 // in place of delta when the roll is kinematic. Kinematic roll (Model::
-// kinematic_roll): the wheelset rolls with the rolling-radius difference on
-// rigid rails, phi = (r_L - r_R) / (a_L + a_R), phidot = dphi/dy ydot (set
+// kinematic_roll): the rigid wheelset's roll from the geometry when it knows
+// it (ContactGeometry::rigid_roll: profiles), else the rolling-radius
+// difference on knife-edge rails, phi = (r_L - r_R) / (a_L + a_R) (tables,
+// cones); phidot = dphi/dy ydot (set
 // before the force elements act, so the suspension sees it; it also enters
 // the lateral creepage through r phidot). The lateral components
 // -side N sin(theta) give the gravitational stiffness (contact angle varying

@@ -15,6 +15,7 @@
 #include "engine/profile_geometry.hpp"
 #include "engine/scenario.hpp"
 #include "engine/system.hpp"
+#include "results/csv_writer.hpp"
 #include "engine_test_support.hpp"
 #include "test_support.hpp"
 
@@ -232,4 +233,43 @@ TEST_CASE("profile geometry: the lateral model shares the load between two point
   CHECK(step_one > 0.1);
   CHECK(shared >= 20);  // >= 0.1 mm
   CHECK(step_two < 0.1 * step_one);
+}
+
+// The lateral model's kinematic roll with real profiles is the rigid
+// wheelset's roll (ContactGeometry::rigid_roll), checked against the
+// Manchester benchmark's equilibrium roll that CONTACT was run with
+// (../shared/reference/contact/mbench_S1002_UIC60_sweep.csv, series yaw0,
+// y_ws = 0 .. 10 mm; CONTACT's roll is negative for a shift toward its
+// wheel: the opposite sign convention). Same tolerance as the geometry's own
+// test (tests/contact_geometry): 5 %, or 1e-5 rad near zero. The knife-edge
+// formula (r_L - r_R)/(a_L + a_R) is 3-8 times larger there.
+TEST_CASE("profile geometry: the lateral model's kinematic roll is the rigid wheelset roll", "[engine][geometry]") {
+  const std::string dir = test::temp_dir("profile_geometry_roll");
+  const Scenario sc = test::scenario_from_text(
+      "vehicle: vehicles/single_wheelset.yaml\n"
+      "track: {segments: [{type: straight, length: 1000}]}\n"
+      "speed: 30\nduration: 1\nwheelset_model: lateral\nwheelset_roll: kinematic\n"
+      "contact:\n  geometry: {type: profiles, wheel: S1002, rail: UIC60, inclination: 1/40, cache_dir: " + dir + "}\n"
+      "  tangential: linear\n"
+      "  material: {E: 2.1e11, nu: 0.28, mu: 0.3}\n");
+  const int body = sc.model.wheelsets[0].body;
+  int lat = -1;
+  for (int i = 0; i < sc.model.n_states; ++i)
+    if (sc.model.state_names[i] == "ws1.lateral") lat = i;
+  REQUIRE(lat >= 0);
+  const auto ref = railsim::results::read_csv(test::shared_path("reference/contact/mbench_S1002_UIC60_sweep.csv"));
+  Data d(sc.model);
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(sc.model.n_states), xd(x.size());
+  int compared = 0;
+  for (std::size_t i = 0; i < ref.rows.size(); ++i) {
+    if (ref.rows[i][ref.column("series")] != "yaw0" || ref.rows[i][ref.column("side")] != "left") continue;
+    const double y = ref.number(i, "y_ws_mm") * 1e-3, roll = -ref.number(i, "roll_ws_rad");
+    x[lat] = y;
+    rhs_or_throw(sc.model, d, 0.0, x.data(), xd.data());
+    const double phi = d.motion[static_cast<std::size_t>(body)].q[kRoll];
+    INFO("y = " << y * 1e3 << " mm: roll " << phi << " vs CONTACT's " << roll);
+    CHECK(std::abs(phi - roll) <= std::max(1e-5, 0.05 * std::abs(roll)));
+    ++compared;
+  }
+  CHECK(compared >= 21);
 }
