@@ -25,10 +25,12 @@ struct WheelContact {
   double C11 = 0.0, C22 = 0.0, C23 = 0.0;  // 0 when unknown
   double N0 = 0.0, q0 = 0.0;           // reference load / approach; 0 when unknown
   double A = 0.0, B = 0.0;             // relative curvatures; 0 when unknown
-  // Points k > 0 of several-point geometries: the normal approach at the
-  // reference state is q0 - gap (gap > q0: the point is open there and closes
-  // when the wheel moves down by (gap - q0)/cos(contact_angle)); N = N0 (1 +
-  // (dq - gap)/q0)^{3/2} while positive. 0 for the main point.
+  // Offset of the load law, N = N0 (1 + (dq - gap)/q0)^{3/2} while positive:
+  // the normal approach at the reference state (z = 0) is q0 - gap (gap > q0:
+  // the point is open there and closes when the wheel moves down by
+  // (gap - q0)/cos(contact_angle)). 0 for tables whose reference state has
+  // N = N0 at every shift (RSGEO); the profiles geometry sets it for every
+  // point from one reference approach that is continuous in the shift.
   double gap = 0.0;
   double flange_force = 0.0;           // extra lateral force toward the track centre [N] (dead-band flange), >= 0
 };

@@ -36,6 +36,14 @@ ProfileGeometry::ProfileGeometry(const ProfileGeometryParams& params, const cont
     : table_(make_table(params)), material_(material) {
   // The symmetric use needs the table on both sides of zero.
   s_max_ = std::min(-params.grid.y_min, params.grid.y_max);
+  // Reference vertical approach: the centred wheel's at N0.
+  {
+    contact::TableSample t;
+    table_.lookup(0.0, t);
+    const contact::ContactPoint& p = t.wheel[static_cast<int>(contact::Side::left)].p[0];
+    const contact::HertzPatch h = contact::hertz_from_load(p.A, p.B, kReferenceLoad, material_);
+    w0_ = h.approach / std::cos(p.angle);
+  }
   WheelContact c;
   evaluate(0.0, c);
   r0_ = c.rolling_radius;
@@ -50,8 +58,11 @@ ProfileGeometry::ProfileGeometry(const ProfileGeometryParams& params, const cont
 namespace {
 
 // One tabulated point as the engine sees it, with its Hertz patch and
-// approach at the reference load.
-void fill(const contact::ContactPoint& p, double s, const contact::Material& material, WheelContact& out) {
+// approach at the reference load, and the offset `gap` that puts its normal
+// approach at the reference state (engine z = 0) at (w0 - v) cos(delta), v its
+// vertical gap in the rigid touching position (see the header).
+void fill(const contact::ContactPoint& p, double s, double w0, const contact::Material& material,
+          WheelContact& out) {
   out = WheelContact{};
   out.rolling_radius = p.radius;
   out.contact_angle = p.angle;
@@ -63,6 +74,8 @@ void fill(const contact::ContactPoint& p, double s, const contact::Material& mat
   out.semi_b = h.b;
   out.N0 = ProfileGeometry::kReferenceLoad;
   out.q0 = h.approach;
+  const double cd = std::cos(p.angle);
+  out.gap = out.q0 - (w0 - p.gap / cd) * cd;  // table gaps are normal gaps: vertical = gap / cos(delta)
 }
 
 }  // namespace
@@ -70,7 +83,7 @@ void fill(const contact::ContactPoint& p, double s, const contact::Material& mat
 void ProfileGeometry::evaluate(double s, WheelContact& out) const {
   contact::TableSample t;
   table_.lookup(s, t);
-  fill(t.wheel[static_cast<int>(contact::Side::left)].p[0], s, material_, out);
+  fill(t.wheel[static_cast<int>(contact::Side::left)].p[0], s, w0_, material_, out);
 }
 
 double ProfileGeometry::rigid_roll(double y) const {
@@ -80,7 +93,6 @@ double ProfileGeometry::rigid_roll(double y) const {
 }
 
 void ProfileGeometry::evaluate_point(double s, int k, WheelContact& out) const {
-  if (k == 0) return evaluate(s, out);
   contact::TableSample t;
   table_.lookup(s, t);
   const contact::WheelContact& w = t.wheel[static_cast<int>(contact::Side::left)];
@@ -88,19 +100,7 @@ void ProfileGeometry::evaluate_point(double s, int k, WheelContact& out) const {
     out = WheelContact{};  // N0 = 0: no such point at this shift
     return;
   }
-  WheelContact main;
-  fill(w.p[0], s, material_, main);
-  fill(w.p[static_cast<std::size_t>(k)], s, material_, out);
-  // Shared vertical approach of the wheel (see the header): the reference
-  // normal approach of this point is q_ref = (q0_main / cos(d_0) - v_k) cos(d_k)
-  // with v_k its vertical gap above the main point's (the table's gaps are
-  // normal gaps; between rows the main point's own gap may be > 0), written as
-  // the offset gap = q0_k - q_ref of the engine's load law.
-  const contact::ContactPoint& p0 = w.p[0];
-  const contact::ContactPoint& pk = w.p[static_cast<std::size_t>(k)];
-  const double v = pk.gap / std::cos(pk.angle) - p0.gap / std::cos(p0.angle);
-  const double q_ref = (main.q0 / std::cos(main.contact_angle) - v) * std::cos(out.contact_angle);
-  out.gap = out.q0 - q_ref;
+  fill(w.p[static_cast<std::size_t>(k)], s, w0_, material_, out);
 }
 
 }  // namespace railsim::engine

@@ -17,13 +17,15 @@
 // the profiles have a second local minimum of the gap within 1 mm (S1002 on
 // UIC60 at 1:40: near 0 mm and 4.0-5.25 mm, the tread jump; none at the
 // flange jump, where the point slides through the flange root), that second
-// point with its own radius, angle, curvatures and Hertz patch. Both share the
-// wheel's vertical approach: at the reference state (main point at its Hertz
-// approach q0 under N0) the second point's normal approach is
-//   q_2 = (q0 / cos(delta_0) - v_2) cos(delta_2)
-// with v_2 its vertical gap above the main point; it carries
-// N_2 = K_2 (q_2 + dq_2)^{3/2} (Hertz, its own K_2 = N0 / q0_2^{3/2}) once
-// closed, so the wheel's load passes continuously from one point to the other
+// point with its own radius, angle, curvatures and Hertz patch. All points
+// share the wheel's vertical approach, measured from one reference that is
+// continuous in the shift: at the engine's z = 0 the wheel is pressed by
+// w0 = q0 / cos(delta) (the centred wheel's Hertz approach under N0) below its
+// rigid touching position at that shift, so point k has the normal approach
+//   q_k = (w0 - v_k) cos(delta_k),   v_k its vertical gap (0 for the touching point),
+// and carries N_k = K_k (q_k + dq_k)^{3/2} (Hertz, K_k = N0 / q0_k^{3/2} from its
+// own curvatures) while positive: the offsets `gap` of engine/contact_geometry.hpp.
+// The wheel's load thus passes continuously from one point to the other
 // (the table interpolates each point on its own, contact_table.hpp). The
 // lateral (quasi-static) model shares the wheel's load the same way
 // (wheelset_lateral.hpp). Wheelset yaw is not in the table (zero yaw).
@@ -66,6 +68,7 @@ class ProfileGeometry final : public ContactGeometry {
   contact::ContactTable table_;
   contact::Material material_;
   double r0_ = 0.0, l0_ = 0.0, s_max_ = 0.0;
+  double w0_ = 0.0;  // reference vertical approach [m]
   std::string description_;
 };
 

@@ -48,7 +48,7 @@ void share_load(PointLoads& p, double Q, double phi_side) {
   const double cd0 = std::cos(m.contact_angle);
   double lo = 0.0;
   for (int k = 0; k < p.n; ++k) lo = std::min(lo, (p.c[k].gap - p.c[k].q0) / std::cos(p.c[k].contact_angle));
-  double hi = m.q0 * (std::pow(Q / (ct[0] * m.N0), 2.0 / 3.0) - 1.0) / cd0;
+  double hi = (m.q0 * (std::pow(Q / (ct[0] * m.N0), 2.0 / 3.0) - 1.0) + m.gap) / cd0;
   double dw = hi;
   for (int it = 0; it < 60; ++it) {
     double ds = 0.0;
