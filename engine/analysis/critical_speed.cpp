@@ -235,18 +235,27 @@ BifurcationResult collect(const std::vector<SweepResult>& rows, const Bifurcatio
 class StateStore {
  public:
   StateStore(const std::string& path, int n_states) : n_(n_states) {
-    std::ifstream in(path);
-    for (std::string line; std::getline(in, line);) {
-      std::stringstream ss(line);
+    std::string text;
+    {
+      std::ifstream in(path, std::ios::binary);
+      std::stringstream ss;
+      ss << in.rdbuf();
+      text = ss.str();
+    }
+    // Only complete lines count: a last line without its newline was torn by an
+    // interruption (its last number may be cut short) and is ignored.
+    std::size_t start = 0;
+    for (std::size_t end = text.find('\n'); end != std::string::npos; start = end + 1, end = text.find('\n', start)) {
+      std::stringstream ls(text.substr(start, end - start));
       std::string key, cell;
-      if (!std::getline(ss, key, ',')) continue;
+      if (!std::getline(ls, key, ',')) continue;
       std::vector<double> x;
-      while (std::getline(ss, cell, ',')) x.push_back(std::strtod(cell.c_str(), nullptr));
-      if (static_cast<int>(x.size()) == n_)  // a torn last line is ignored
+      while (std::getline(ls, cell, ',')) x.push_back(std::strtod(cell.c_str(), nullptr));
+      if (static_cast<int>(x.size()) == n_)
         states_[key] = Eigen::Map<const Eigen::VectorXd>(x.data(), static_cast<Eigen::Index>(x.size()));
     }
-    in.close();
     out_.open(path, std::ios::app);
+    if (start < text.size()) out_ << '\n';  // end the torn line so the next state starts a line of its own
   }
   void put(const std::string& key, const Eigen::VectorXd& x) {
     if (x.size() != n_) return;
@@ -288,8 +297,9 @@ class StateStore {
 BifurcationResult continuation_sweep(const Scenario& scenario, const BifurcationOptions& o,
                                      const std::vector<SweepPoint>& points, const std::string& points_csv) {
   if (mpi_context().size > 1)
-    throw InputError("bifurcation sweep: continuation keeps the final states of the runs in one file; "
-                     "use threads (--threads), not mpirun");
+    throw InputError("bifurcation sweep: continuation (--continuation, or continuation: true in the scenario's "
+                     "critical_speed section) keeps the final states of the runs in one file: use threads "
+                     "(--threads), or --no-continuation under mpirun");
   const std::vector<std::string> columns = {"speed_m_s", "down", "amplitude_m", "frequency_hz", "growth", "failed"};
   auto values = [](double v, double branch, const PointOutcome& r) {
     return std::vector<double>{v, branch, r.amplitude, r.frequency, r.growth, r.failed ? 1.0 : 0.0};
@@ -326,10 +336,18 @@ BifurcationResult continuation_sweep(const Scenario& scenario, const Bifurcation
   const std::string chain_csv = points_csv + ".chain.csv";
   std::vector<SweepResult> chain = read_finished_points(chain_csv, columns.size());
   if (lowest >= 0 && static_cast<std::size_t>(lowest) + 1 < down.size()) {
-    std::string from = down[static_cast<std::size_t>(lowest)]->key;
+    const SweepResult& vh = *down[static_cast<std::size_t>(lowest)];
+    std::string from = vh.key;
+    if (!states.find(from) && !point_of(vh).failed) {
+      // Its state was lost (an interrupted write): the run is deterministic, run it again.
+      Eigen::VectorXd x_end;
+      const PointOutcome r = run_point(scenario, vh.values[0], disturbed_state(scenario, o.large_disturbance), o,
+                                       &x_end);
+      if (!r.failed) states.put(from, x_end);
+    }
     if (!states.find(from))
       spdlog::warn("bifurcation sweep: the run at {:.1f} km/h stopped, so no limit cycle to follow below it",
-                   down[static_cast<std::size_t>(lowest)]->values[0] * 3.6);
+                   vh.values[0] * 3.6);
     for (std::size_t i = static_cast<std::size_t>(lowest) + 1; i < down.size() && states.find(from); ++i) {
       SweepResult& target = *down[i];
       const double v = target.values[0];

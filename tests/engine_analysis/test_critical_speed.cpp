@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 
@@ -202,6 +203,9 @@ TEST_CASE("bifurcation sweep with continuation follows the branch to its fold an
 
   // Interrupt it: phase 1 after 4 points (its part files lost), the chain
   // before its last point; the final file is gone. Resuming gives the same file.
+  // Then once more with the chain gone and the states file torn inside its
+  // last line (the last number cut, no newline): the torn state is ignored,
+  // the run it belongs to is repeated, and the result is again the same.
   const std::string full = railsim::test::read_text(dir + "/cont.csv");
   auto keep_lines = [](const std::string& path, std::size_t n) {
     std::ifstream in(path);
@@ -220,5 +224,27 @@ TEST_CASE("bifurcation sweep with continuation follows the branch to its fold an
   std::filesystem::remove(dir + "/cont.csv");
   const BifurcationResult again = bifurcation_sweep(sc, o, dir + "/cont.csv");
   CHECK(railsim::test::read_text(dir + "/cont.csv") == full);
+
+  std::filesystem::remove(dir + "/cont.csv.chain.csv");
+  std::filesystem::remove(dir + "/cont.csv");
+  {
+    // Keep the states of the phase-1 runs only; the one of the lowest hunting
+    // speed (where the chain starts) goes last, torn.
+    char vh_key[64];
+    std::snprintf(vh_key, sizeof vh_key, "down:%.6g,", fixed.nonlinear_critical_speed);
+    std::ifstream in(dir + "/cont.csv.down.states");
+    std::string kept, vh_line, line;
+    while (std::getline(in, line)) {
+      if (line.rfind(vh_key, 0) == 0) vh_line = line;
+      else if (line.rfind("down:", 0) == 0) kept += line + "\n";
+    }
+    in.close();
+    REQUIRE(vh_line.size() > 20);
+    kept += vh_line.substr(0, vh_line.size() - 5);  // its last number cut, no newline
+    std::ofstream(dir + "/cont.csv.down.states", std::ios::trunc) << kept;
+  }
+  const BifurcationResult torn = bifurcation_sweep(sc, o, dir + "/cont.csv");
+  CHECK(railsim::test::read_text(dir + "/cont.csv") == full);
+  CHECK(torn.nonlinear_critical_speed == cont.nonlinear_critical_speed);
   CHECK(again.nonlinear_critical_speed == cont.nonlinear_critical_speed);
 }
