@@ -14,6 +14,10 @@
 #include <sstream>
 #include <thread>
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
 #include "contact/fastsim.hpp"  // check_tangential_input
 #include "contact/hertz.hpp"
 #include "contact/kalker_coefficients.hpp"
@@ -353,7 +357,8 @@ void MimTable::save(const std::string& path) const {
   b.put(static_cast<std::uint64_t>(values_.size()));
   b.buf.append(reinterpret_cast<const char*>(values_.data()), values_.size() * sizeof(double));
   b.put(fnv1a(b.buf.data(), b.buf.size()));
-  const std::string tmp = path + ".tmp" + std::to_string(std::hash<std::thread::id>{}(std::this_thread::get_id()));
+  const std::string tmp = path + ".tmp" + std::to_string(static_cast<long>(::getpid())) + "_" +
+                          std::to_string(std::hash<std::thread::id>{}(std::this_thread::get_id()));
   {
     std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
     f.write(b.buf.data(), static_cast<std::streamsize>(b.buf.size()));
@@ -507,10 +512,39 @@ std::string mim_table_cache_path(const MimTableSpec& spec, const std::string& co
   return mim_table_cache_dir(configured_cache_dir) + "/" + name;
 }
 
+namespace {
+
+// Exclusive advisory lock on "<table>.lock" (flock) while a table is loaded or
+// built, so that concurrent processes (MPI ranks, two users of one cache) and
+// threads build it once: the others wait and then load the finished file.
+class TableFileLock {
+ public:
+  explicit TableFileLock(const std::string& path) : fd_(::open((path + ".lock").c_str(), O_RDWR | O_CREAT, 0644)) {
+    if (fd_ >= 0 && ::flock(fd_, LOCK_EX) != 0) {
+      ::close(fd_);
+      fd_ = -1;
+    }
+  }
+  ~TableFileLock() {
+    if (fd_ >= 0) {
+      ::flock(fd_, LOCK_UN);
+      ::close(fd_);
+    }
+  }
+  TableFileLock(const TableFileLock&) = delete;
+  TableFileLock& operator=(const TableFileLock&) = delete;
+
+ private:
+  int fd_;  // -1: no lock (read-only cache folder): each caller builds on its own
+};
+
+}  // namespace
+
 std::shared_ptr<const MimTable> load_or_build_mim_table(const MimTableSpec& spec, const std::string& cache_dir,
                                                         const std::function<void(const std::string&)>& log) {
   spec.check();
   const std::string path = mim_table_cache_path(spec, cache_dir);
+  const TableFileLock lock(path);
   if (std::filesystem::exists(path)) {
     try {
       return MimTable::load(path, spec);
