@@ -31,6 +31,26 @@ ProfileGeometryParams s1002_uic60(const std::string& cache) {
   return p;
 }
 
+// The single wheelset on S1002/UIC60 1:40 profiles with linear creep, for the
+// engine-level geometry tests; `models` holds the wheelset_model (and roll)
+// lines, `spin` whether the spin creepage acts.
+Scenario profiles_wheelset(const std::string& cache, const std::string& models, bool spin) {
+  return test::scenario_from_text(
+      "vehicle: vehicles/single_wheelset.yaml\n"
+      "track: {segments: [{type: straight, length: 1000}]}\n"
+      "speed: 30\nduration: 1\n" + models +
+      "contact:\n  geometry: {type: profiles, wheel: S1002, rail: UIC60, inclination: 1/40, cache_dir: " + cache +
+      "}\n  tangential: linear\n" + (spin ? "" : "  spin: false\n") +
+      "  material: {E: 2.1e11, nu: 0.28, mu: 0.3}\n");
+}
+
+// Index of a named state (-1 when absent).
+int state_index(const Scenario& sc, const std::string& name) {
+  for (int i = 0; i < sc.model.n_states; ++i)
+    if (sc.model.state_names[static_cast<std::size_t>(i)] == name) return i;
+  return -1;
+}
+
 }  // namespace
 
 TEST_CASE("profile geometry: the right wheel at -y mirrors the left wheel at +y", "[engine][geometry]") {
@@ -122,20 +142,10 @@ TEST_CASE("profile geometry in a scenario: runs, and bad input names the key", "
 // forces' component alone, Y = -sum N_k sin(delta_k) (one point: -W tan delta).
 TEST_CASE("profile geometry: two-point contact shares the load across the tread jump", "[engine][geometry]") {
   const std::string dir = test::temp_dir("profile_geometry_two_point");
-  const Scenario sc = test::scenario_from_text(
-      "vehicle: vehicles/single_wheelset.yaml\n"
-      "track: {segments: [{type: straight, length: 1000}]}\n"
-      "speed: 30\nduration: 1\nwheelset_model: full\n"
-      "contact:\n  geometry: {type: profiles, wheel: S1002, rail: UIC60, inclination: 1/40, cache_dir: " + dir + "}\n"
-      "  tangential: linear\n  spin: false\n"
-      "  material: {E: 2.1e11, nu: 0.28, mu: 0.3}\n");
+  const Scenario sc = profiles_wheelset(dir, "wheelset_model: full\n", false);
   const auto& geo = *sc.model.wheelsets[0].geometry;
   REQUIRE(geo.points() == 2);
-  int lat = -1, vert = -1;
-  for (int i = 0; i < sc.model.n_states; ++i) {
-    if (sc.model.state_names[i] == "ws1.lateral") lat = i;
-    if (sc.model.state_names[i] == "ws1.vertical") vert = i;
-  }
+  const int lat = state_index(sc, "ws1.lateral"), vert = state_index(sc, "ws1.vertical");
   REQUIRE(lat >= 0);
   REQUIRE(vert >= 0);
   const double W = 50e3;
@@ -203,18 +213,10 @@ TEST_CASE("profile geometry: two-point contact shares the load across the tread 
 // main points' rolling radii jumps with them and would hide the comparison.
 TEST_CASE("profile geometry: the lateral model shares the load between two points", "[engine][geometry]") {
   const std::string dir = test::temp_dir("profile_geometry_two_point_lateral");
-  const Scenario sc = test::scenario_from_text(
-      "vehicle: vehicles/single_wheelset.yaml\n"
-      "track: {segments: [{type: straight, length: 1000}]}\n"
-      "speed: 30\nduration: 1\nwheelset_model: lateral\nwheelset_roll: none\n"
-      "contact:\n  geometry: {type: profiles, wheel: S1002, rail: UIC60, inclination: 1/40, cache_dir: " + dir + "}\n"
-      "  tangential: linear\n  spin: false\n"
-      "  material: {E: 2.1e11, nu: 0.28, mu: 0.3}\n");
+  const Scenario sc = profiles_wheelset(dir, "wheelset_model: lateral\nwheelset_roll: none\n", false);
   const auto& geo = *sc.model.wheelsets[0].geometry;
   const int body = sc.model.wheelsets[0].body;
-  int lat = -1;
-  for (int i = 0; i < sc.model.n_states; ++i)
-    if (sc.model.state_names[i] == "ws1.lateral") lat = i;
+  const int lat = state_index(sc, "ws1.lateral");
   REQUIRE(lat >= 0);
   Data d(sc.model);
   Eigen::VectorXd x = Eigen::VectorXd::Zero(sc.model.n_states), xd(x.size());
@@ -257,17 +259,9 @@ TEST_CASE("profile geometry: the lateral model shares the load between two point
 // formula (r_L - r_R)/(a_L + a_R) is 3-8 times larger there.
 TEST_CASE("profile geometry: the lateral model's kinematic roll is the rigid wheelset roll", "[engine][geometry]") {
   const std::string dir = test::temp_dir("profile_geometry_roll");
-  const Scenario sc = test::scenario_from_text(
-      "vehicle: vehicles/single_wheelset.yaml\n"
-      "track: {segments: [{type: straight, length: 1000}]}\n"
-      "speed: 30\nduration: 1\nwheelset_model: lateral\nwheelset_roll: kinematic\n"
-      "contact:\n  geometry: {type: profiles, wheel: S1002, rail: UIC60, inclination: 1/40, cache_dir: " + dir + "}\n"
-      "  tangential: linear\n"
-      "  material: {E: 2.1e11, nu: 0.28, mu: 0.3}\n");
+  const Scenario sc = profiles_wheelset(dir, "wheelset_model: lateral\nwheelset_roll: kinematic\n", true);
   const int body = sc.model.wheelsets[0].body;
-  int lat = -1;
-  for (int i = 0; i < sc.model.n_states; ++i)
-    if (sc.model.state_names[i] == "ws1.lateral") lat = i;
+  const int lat = state_index(sc, "ws1.lateral");
   REQUIRE(lat >= 0);
   const auto ref = railsim::results::read_csv(test::shared_path("reference/contact/mbench_S1002_UIC60_sweep.csv"));
   Data d(sc.model);
