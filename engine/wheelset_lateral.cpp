@@ -182,9 +182,11 @@ bool wheelset_lateral_forces(const Model& model, Data& d, int w) {
       if (!cf.valid) {
         out.valid = false;
         out.reason = cf.reason;
-        if (d.invalid_contact_calls == 0) d.first_invalid_reason = cf.reason;  // allocation only once
-        ++d.invalid_contact_calls;
       }
+    }
+    if (!out.valid) {  // counted per wheel, as in the full model
+      if (d.invalid_contact_calls == 0) d.first_invalid_reason = out.reason;  // allocation only once
+      ++d.invalid_contact_calls;
     }
   }
   (void)body;
