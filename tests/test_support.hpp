@@ -13,14 +13,11 @@
 
 namespace railsim::test {
 
-// ../shared folder (reference data); RAILSIM_SHARED_DIR env var overrides.
-inline std::string shared_dir() {
-  if (const char* env = std::getenv("RAILSIM_SHARED_DIR")) return env;
-  return RAILSIM_SHARED_DIR;
-}
-inline std::string shared_path(const std::string& rel) { return shared_dir() + "/" + rel; }
 // tests/data folder (our own validation data files).
 inline std::string data_path(const std::string& rel) { return std::string(RAILSIM_TEST_DATA_DIR) + "/" + rel; }
+// Reference results of other programs copied into the repository with their
+// NOTICE (tests/data/reference/: CONTACT's results in contact/).
+inline std::string reference_path(const std::string& rel) { return data_path("reference/" + rel); }
 inline std::string source_path(const std::string& rel) { return std::string(RAILSIM_SOURCE_DIR) + "/" + rel; }
 
 // The whole content of a file (empty when it cannot be read).

@@ -49,7 +49,7 @@ TEST_CASE("railsim contact writes one row per case with the Hertz patch", "[cli]
   for (const char* col : {"id", "model", "a", "b", "p0", "Fx", "Fy", "Mz", "valid", "time_ns"}) CHECK_NOTHROW(t.column(col));
   // tread_small is CONTACT's thesis_Rw460_Rr300 patch (hertz_normal_analytic.csv).
   const auto ref = railsim::results::read_csv(
-      railsim::test::shared_path("reference/contact/hertz_normal_analytic.csv"));
+      railsim::test::reference_path("contact/hertz_normal_analytic.csv"));
   std::size_t k = 0;
   while (k < ref.rows.size() && ref.rows[k][0] != "thesis_Rw460_Rr300") ++k;
   REQUIRE(k < ref.rows.size());

@@ -1,6 +1,6 @@
 // Hertz normal contact (contact/hertz.cpp) against closed forms, the classical
 // m, n, r table, the worked vector of physics-reference.md sec. 1.6 and
-// CONTACT's Hertz solutions (../shared/reference/contact/hertz_normal_analytic.csv).
+// CONTACT's Hertz solutions (tests/data/reference/contact/hertz_normal_analytic.csv).
 #include <catch2/catch.hpp>
 
 #include <boost/math/special_functions/ellint_1.hpp>
@@ -130,7 +130,7 @@ TEST_CASE("worked vector of physics-reference 1.6", "[hertz]") {
 }
 
 TEST_CASE("CONTACT Hertz references to 1 % (reached: 1e-6)", "[hertz][contact_ref]") {
-  const auto t = railsim::results::read_csv(railsim::test::shared_path("reference/contact/hertz_normal_analytic.csv"));
+  const auto t = railsim::results::read_csv(railsim::test::reference_path("contact/hertz_normal_analytic.csv"));
   REQUIRE(t.rows.size() >= 7);
   double worst = 0.0;
   for (std::size_t i = 0; i < t.rows.size(); ++i) {

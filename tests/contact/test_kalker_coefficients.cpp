@@ -1,7 +1,7 @@
 // Kalker's creep coefficients (contact/kalker_coefficients.cpp) against the
 // classic table (tests/data/kalker_table.csv, physics-reference.md sec. 2.2),
 // smoothness between nodes, the asymptotes of sec. 2.3 and CONTACT's discretised
-// linear-theory coefficients (../shared/reference/contact/linear_theory_creep_coefficients.csv).
+// linear-theory coefficients (tests/data/reference/contact/linear_theory_creep_coefficients.csv).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -124,7 +124,7 @@ TEST_CASE("Kalker coefficients beyond the table follow the asymptotes", "[kalker
 // 7 % at N=80 and within 3 % of the O(1/N) Richardson extrapolation of N=60, 80.
 TEST_CASE("Kalker coefficients vs CONTACT linear theory (nu=0.28)", "[kalker][contact_ref]") {
   const auto t = railsim::results::read_csv(
-      railsim::test::shared_path("reference/contact/linear_theory_creep_coefficients.csv"));
+      railsim::test::reference_path("contact/linear_theory_creep_coefficients.csv"));
   int checked = 0;
   double worst[4] = {0, 0, 0, 0}, worst33x = 0;
   for (std::size_t i = 0; i < t.rows.size(); ++i) {

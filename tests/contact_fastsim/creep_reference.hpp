@@ -1,5 +1,5 @@
 // Shared by the FASTSIM and FaStrip tests: CONTACT's exact creep curves for a
-// circular Hertzian patch (../shared/reference/contact/creep_curves_circ_exact.csv,
+// circular Hertzian patch (tests/data/reference/contact/creep_curves_circ_exact.csv,
 // units mm, N, N mm, spin rad/mm; README.md there) and the error of a
 // tangential model against them, per family (long, lat, spin).
 #pragma once
@@ -23,7 +23,7 @@ struct CreepCase {
 };
 
 inline std::vector<CreepCase> load_circular_creep_curves() {
-  const auto t = results::read_csv(shared_path("reference/contact/creep_curves_circ_exact.csv"));
+  const auto t = results::read_csv(reference_path("contact/creep_curves_circ_exact.csv"));
   std::vector<CreepCase> cases;
   for (std::size_t r = 0; r < t.rows.size(); ++r) {
     CreepCase c;

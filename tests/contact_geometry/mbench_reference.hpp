@@ -1,5 +1,5 @@
 // Reading the CONTACT Manchester-benchmark sweep and the exclusion list for the
-// geometry tests (see ../shared/reference/contact/README.md section (d)).
+// geometry tests (see tests/data/reference/contact/README.md section (d)).
 #pragma once
 
 #include <cmath>
@@ -20,7 +20,7 @@ struct MbenchRow {
 };
 
 inline std::vector<MbenchRow> read_mbench() {
-  const auto t = results::read_csv(shared_path("reference/contact/mbench_S1002_UIC60_sweep.csv"));
+  const auto t = results::read_csv(reference_path("contact/mbench_S1002_UIC60_sweep.csv"));
   std::vector<MbenchRow> rows;
   for (std::size_t i = 0; i < t.rows.size(); ++i) {
     MbenchRow r;

@@ -14,7 +14,7 @@ using railsim::test::run_railsim;
 
 TEST_CASE("railsim contact --model mim reproduces CONTACT's creep curve point", "[mim][cli]") {
   const std::string dir = railsim::test::temp_dir("cli_mim");
-  const auto ref = railsim::results::read_csv(railsim::test::shared_path("reference/contact/creep_curves_circ_exact.csv"));
+  const auto ref = railsim::results::read_csv(railsim::test::reference_path("contact/creep_curves_circ_exact.csv"));
   std::size_t k = 0;
   while (!(ref.rows[k][ref.column("family")] == "long" && ref.number(k, "cksi") == 0.0008)) ++k;
   const std::string cases = dir + "/cases.yaml";

@@ -48,7 +48,7 @@ FieldFit fit_hertz(const ContactGrid& g, const std::vector<double>& p) {
 }  // namespace
 
 TEST_CASE("Hertz sphere and ellipses on a 60x60 grid: a, b, p0, approach within 1 %", "[mim][normal]") {
-  const auto tab = railsim::results::read_csv(railsim::test::shared_path("reference/contact/hertz_normal_analytic.csv"));
+  const auto tab = railsim::results::read_csv(railsim::test::reference_path("contact/hertz_normal_analytic.csv"));
   const ElasticPair m = steel();
   for (std::size_t row = 0; row < tab.rows.size(); ++row) {
     const std::string id = tab.rows[row][tab.column("case_id")];
@@ -81,8 +81,8 @@ TEST_CASE("Hertz sphere and ellipses on a 60x60 grid: a, b, p0, approach within 
 }
 
 TEST_CASE("same discretisation as CONTACT gives CONTACT's numerical Hertz results", "[mim][normal]") {
-  const auto ana = railsim::results::read_csv(railsim::test::shared_path("reference/contact/hertz_normal_analytic.csv"));
-  const auto bem = railsim::results::read_csv(railsim::test::shared_path("reference/contact/hertz_normal_bem.csv"));
+  const auto ana = railsim::results::read_csv(railsim::test::reference_path("contact/hertz_normal_analytic.csv"));
+  const auto bem = railsim::results::read_csv(railsim::test::reference_path("contact/hertz_normal_bem.csv"));
   const ElasticPair m = steel();
   int compared = 0;
   for (std::size_t row = 0; row < bem.rows.size(); ++row) {

@@ -48,7 +48,7 @@ TEST_CASE("Cattaneo-Mindlin: stick radius and force versus shift within 1 %", "[
   // (Johnson 1985, eqs. 7.33 and 7.46): shift of full sliding
   // d_s = 3 mu P (2 - nu)/(8 G a); Q = mu P [1 - (1 - d/d_s)^{3/2}];
   // stick radius c = a (1 - Q/(mu P))^{1/3} = a (1 - d/d_s)^{1/2}.
-  const auto tab = railsim::results::read_csv(railsim::test::shared_path("reference/contact/hertz_normal_analytic.csv"));
+  const auto tab = railsim::results::read_csv(railsim::test::reference_path("contact/hertz_normal_analytic.csv"));
   const HertzPatch patch = patch_of(tab, find_row(tab, "ellipse_aob1"));
   const Material m = steel(0.3);
   const double G = m.shear_modulus(), mu = m.mu, P = patch.Fz, a = patch.a;
@@ -76,8 +76,8 @@ TEST_CASE("Cattaneo-Mindlin: stick radius and force versus shift within 1 %", "[
 
 namespace {
 void check_linear_theory(std::initializer_list<const char*> cases) {
-  const auto ana = railsim::results::read_csv(railsim::test::shared_path("reference/contact/hertz_normal_analytic.csv"));
-  const auto lin = railsim::results::read_csv(railsim::test::shared_path("reference/contact/linear_theory_creep_coefficients.csv"));
+  const auto ana = railsim::results::read_csv(railsim::test::reference_path("contact/hertz_normal_analytic.csv"));
+  const auto lin = railsim::results::read_csv(railsim::test::reference_path("contact/linear_theory_creep_coefficients.csv"));
   const Material m = steel(100.0);
   const double G = m.shear_modulus();
   const int N = 60;
@@ -130,7 +130,7 @@ TEST_CASE("linear theory: C11, C22, C23 within 2 % of Kalker's table and of CONT
 namespace {
 // Compare one creepage family of CONTACT's exact circular creep curves.
 void check_creep_family(const std::string& family, int stride) {
-  const auto t = railsim::results::read_csv(railsim::test::shared_path("reference/contact/creep_curves_circ_exact.csv"));
+  const auto t = railsim::results::read_csv(railsim::test::reference_path("contact/creep_curves_circ_exact.csv"));
   HertzPatch patch;
   patch.A = t.number(0, "A1_per_mm") * 1e3;
   patch.B = t.number(0, "B1_per_mm") * 1e3;

@@ -9,7 +9,7 @@
 using namespace railsim;
 
 TEST_CASE("RSGEO table: values at zero shift and landmarks", "[engine][geometry]") {
-  const engine::GeometryTable t(test::shared_path("reference/dytsi/RSGEO_S1002_UIC60_1in40.dat"));
+  const engine::GeometryTable t(test::source_path("vehicles/contact_tables/RSGEO_S1002_UIC60_1in40.dat"));
   CHECK(t.rows() == 3402);
   engine::WheelContact c;
   t.evaluate(0.0, c);

@@ -252,7 +252,7 @@ TEST_CASE("profile geometry: the lateral model shares the load between two point
 // The lateral model's kinematic roll with real profiles is the rigid
 // wheelset's roll (ContactGeometry::rigid_roll), checked against the
 // Manchester benchmark's equilibrium roll that CONTACT was run with
-// (../shared/reference/contact/mbench_S1002_UIC60_sweep.csv, series yaw0,
+// (tests/data/reference/contact/mbench_S1002_UIC60_sweep.csv, series yaw0,
 // y_ws = 0 .. 10 mm; CONTACT's roll is negative for a shift toward its
 // wheel: the opposite sign convention). Same tolerance as the geometry's own
 // test (tests/contact_geometry): 5 %, or 1e-5 rad near zero. The knife-edge
@@ -263,7 +263,7 @@ TEST_CASE("profile geometry: the lateral model's kinematic roll is the rigid whe
   const int body = sc.model.wheelsets[0].body;
   const int lat = state_index(sc, "ws1.lateral");
   REQUIRE(lat >= 0);
-  const auto ref = railsim::results::read_csv(test::shared_path("reference/contact/mbench_S1002_UIC60_sweep.csv"));
+  const auto ref = railsim::results::read_csv(test::reference_path("contact/mbench_S1002_UIC60_sweep.csv"));
   Data d(sc.model);
   Eigen::VectorXd x = Eigen::VectorXd::Zero(sc.model.n_states), xd(x.size());
   int compared = 0;
