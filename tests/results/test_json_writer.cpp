@@ -52,7 +52,7 @@ TEST_CASE("JSON output parses back to the same values, in order", "[results]") {
   }
 }
 
-TEST_CASE("JSON: invalid UTF-8 is replaced, not fatal; write_file is atomic", "[results]") {
+TEST_CASE("JSON: invalid UTF-8 is replaced, not fatal, and write_file is atomic", "[results]") {
   Json j = Json::object();
   j.set("path", std::string("caf\xe9.yaml"));  // Latin-1 byte, not UTF-8
   const auto p = nlohmann::json::parse(j.dump());
