@@ -76,7 +76,8 @@ def contact(model, xi=0.0, eta=0.0, phi=0.0, *, a=None, b=None, A=None, B=None, 
     nu, mu; rolling speed V [m/s]; reduction: a preset ("elastic_fe", ...), one
     factor k or (k11, k22, k23). Every argument may be an array; they broadcast.
     Returns a dict of arrays: Fx, Fy [N], Mz [N m], valid (bool), iterations,
-    stick_fraction (-1: unknown), the patch a, b [m] and p0 [Pa]; reason: per
+    stick_fraction (-1: unknown), the patch a, b [m] and p0 [Pa] (numbers when
+    the patch data are scalars, else arrays); reason: per
     point the index of its validity reason in reason_texts (0: valid, "").
     """
     curv, s1, s2 = _shape_args(a, b, A, B)
@@ -93,7 +94,7 @@ def contact(model, xi=0.0, eta=0.0, phi=0.0, *, a=None, b=None, A=None, B=None, 
     flat = [x.reshape(-1) if x.ndim == 1 else x.reshape(1) for x in arrays]
     r = _railsim._contact_solve(model, curv, *flat, grid=grid, tolerance=tolerance, cache_dir=cache_dir)
     if shape == ():
-        for key in ("Fx", "Fy", "Mz", "stick_fraction", "a", "b", "p0"):
+        for key in ("Fx", "Fy", "Mz", "stick_fraction"):
             r[key] = float(r[key][0])
         r["valid"] = bool(r["valid"][0])
         r["iterations"] = int(r["iterations"][0])

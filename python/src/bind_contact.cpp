@@ -9,7 +9,8 @@
 // Fz, for material E, nu, mu, exactly as `railsim contact` does for a case
 // file; it is recomputed only when the patch data change from the previous
 // point. Outputs: Fx, Fy, Mz [N, N m] (forces of the rail on the wheel,
-// contact/types.hpp), valid, iterations, stick_fraction, the patch a, b, p0,
+// contact/types.hpp), valid, iterations, stick_fraction, the patch a, b, p0
+// (numbers when the patch data are one value each, else arrays),
 // and per point the index of its validity reason in reason_texts (0: valid).
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -34,11 +35,12 @@ namespace {
 
 using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
-// A read-only view of an input array of length n or 1.
+// A read-only view of an input array of length n or 1 (stride 0: one value for all).
 struct Column {
   const double* p = nullptr;
   py::ssize_t n = 0;
-  double operator[](py::ssize_t i) const { return p[n == 1 ? 0 : i]; }
+  py::ssize_t stride = 1;
+  double operator[](py::ssize_t i) const { return p[i * stride]; }
 };
 
 Column column(const Array& a, const char* name, py::ssize_t& n) {
@@ -51,7 +53,7 @@ Column column(const Array& a, const char* name, py::ssize_t& n) {
                        std::to_string(n));
     n = len;
   }
-  return {a.data(), len};
+  return {a.data(), len, len == 1 ? 0 : 1};
 }
 
 py::dict solve_arrays(const std::string& model_name, bool curvatures, const Array& xi, const Array& eta,
@@ -72,7 +74,10 @@ py::dict solve_arrays(const std::string& model_name, bool curvatures, const Arra
   const Column cv = column(v, "V", n), ck1 = column(k11, "k11", n), ck2 = column(k22, "k22", n),
                ck3 = column(k23, "k23", n);
 
-  py::array_t<double> Fx(n), Fy(n), Mz(n), stick(n), pa(n), pb(n), p0(n);
+  // One patch for all points: a, b, p0 come back as numbers, else as arrays.
+  const bool fixed_patch = c1.n == 1 && c2.n == 1 && cf.n == 1 && cE.n == 1 && cnu.n == 1;
+  const py::ssize_t np = fixed_patch ? 1 : n;
+  py::array_t<double> Fx(n), Fy(n), Mz(n), stick(n), pa(np), pb(np), p0(np);
   py::array_t<bool> valid(n);
   py::array_t<int> iterations(n);
   double *fx = Fx.mutable_data(), *fy = Fy.mutable_data(), *mz = Mz.mutable_data(), *st = stick.mutable_data();
@@ -87,17 +92,22 @@ py::dict solve_arrays(const std::string& model_name, bool curvatures, const Arra
   {
     py::gil_scoped_release release;
     contact::ContactInput in;
-    double last[5] = {NAN, NAN, NAN, NAN, NAN};
+    // The Hertz patch: once when its data are one value each, else per point
+    // when they change from the previous point.
+    const auto solve_patch = [&](py::ssize_t i) {
+      in.material.E = cE[i];
+      in.material.nu = cnu[i];
+      in.patch = curvatures ? contact::hertz_from_load(c1[i], c2[i], cf[i], in.material)
+                            : contact::hertz_from_semi_axes(c1[i], c2[i], cf[i], in.material);
+    };
+    if (fixed_patch) {
+      solve_patch(0);
+      oa[0] = in.patch.a, ob[0] = in.patch.b, op0[0] = in.patch.p0;
+    }
     for (py::ssize_t i = 0; i < n; ++i) {
-      const double shape[5] = {c1[i], c2[i], cf[i], cE[i], cnu[i]};
-      if (shape[0] != last[0] || shape[1] != last[1] || shape[2] != last[2] || shape[3] != last[3] ||
-          shape[4] != last[4]) {
-        in.material.E = shape[3];
-        in.material.nu = shape[4];
-        in.patch = curvatures ? contact::hertz_from_load(shape[0], shape[1], shape[2], in.material)
-                              : contact::hertz_from_semi_axes(shape[0], shape[1], shape[2], in.material);
-        std::copy(shape, shape + 5, last);
-      }
+      if (!fixed_patch && (i == 0 || c1[i] != c1[i - 1] || c2[i] != c2[i - 1] || cf[i] != cf[i - 1] ||
+                           cE[i] != cE[i - 1] || cnu[i] != cnu[i - 1]))
+        solve_patch(i);
       in.material.mu = cmu[i];
       in.creep = {cx[i], ce[i], cp[i]};
       in.reduction = {ck1[i], ck2[i], ck3[i]};
@@ -109,9 +119,7 @@ py::dict solve_arrays(const std::string& model_name, bool curvatures, const Arra
       ok[i] = f.valid;
       it[i] = f.iterations;
       st[i] = f.stick_fraction;
-      oa[i] = in.patch.a;
-      ob[i] = in.patch.b;
-      op0[i] = in.patch.p0;
+      if (!fixed_patch) oa[i] = in.patch.a, ob[i] = in.patch.b, op0[i] = in.patch.p0;
       std::int16_t code = 0;
       if (!f.valid) {
         const char* why = f.reason ? f.reason : "";
@@ -128,9 +136,11 @@ py::dict solve_arrays(const std::string& model_name, bool curvatures, const Arra
   r["valid"] = valid;
   r["iterations"] = iterations;
   r["stick_fraction"] = stick;
-  r["a"] = pa;
-  r["b"] = pb;
-  r["p0"] = p0;
+  if (fixed_patch) {
+    r["a"] = pa.at(0), r["b"] = pb.at(0), r["p0"] = p0.at(0);
+  } else {
+    r["a"] = pa, r["b"] = pb, r["p0"] = p0;
+  }
   r["reason"] = reason;
   py::list why;
   for (const char* t : texts) why.append(py::str(t));

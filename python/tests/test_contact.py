@@ -21,8 +21,11 @@ def test_every_model_is_callable_on_arrays():
     xi = np.linspace(-2e-3, 2e-3, 9)
     for m in MODELS:
         r = railsim.contact(m, xi, 0.0, 0.0, **PATCH)
-        for key in ("Fx", "Fy", "Mz", "stick_fraction", "a", "b", "p0"):
+        for key in ("Fx", "Fy", "Mz", "stick_fraction"):
             assert r[key].shape == xi.shape, (m, key)
+        assert r["a"] == pytest.approx(6e-3) and r["b"] == pytest.approx(4e-3)  # one patch: numbers
+        per_point = railsim.contact(m, xi[:2], a=[6e-3, 5e-3], b=4e-3, Fz=75e3)
+        assert per_point["a"].tolist() == pytest.approx([6e-3, 5e-3])
         assert r["valid"].dtype == bool and r["valid"].shape == xi.shape
         assert r["model"] == m
 
