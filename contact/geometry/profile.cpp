@@ -12,7 +12,6 @@
 #include "core/data_dir.hpp"
 #include "core/errors.hpp"
 
-
 namespace railsim::contact {
 
 namespace {

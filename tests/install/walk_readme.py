@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
-"""Walk the README's quick example commands: every line of every fenced block
-marked ```sh is run with bash from the source root, with the build folder's
-program first on PATH (build/release in the README stands for this build's
-folder, e.g. build/ci under the ci preset). Each must exit 0; the files it
-names after --out must exist afterwards. Long jobs (the main job) and the
-set-up commands are in indented blocks, which are not walked.
+"""Walk the README's quick examples: every line of every fenced block marked
+```sh is run with bash from the source root, with the build folder's program
+first on PATH (build/release in the README stands for this build's folder,
+e.g. build/ci under the ci preset), and every ```python block with this
+Python and the build's module on PYTHONPATH. Each must exit 0; the files a
+command names after --out must exist afterwards. Long jobs (the main job) and
+the set-up commands are in indented blocks, which are not walked.
 
     walk_readme.py SOURCE_DIR BUILD_DIR
 """
@@ -24,7 +25,17 @@ if len(commands) < 5:
 rel_build = os.path.relpath(build, src)
 env = os.environ.copy()
 env["PATH"] = os.path.abspath(build) + os.pathsep + env.get("PATH", "")
+env["PYTHONPATH"] = os.path.join(os.path.abspath(build), "python")
 failed = 0
+for code in re.findall(r"^```python\n(.*?)^```", text, flags=re.S | re.M):
+    t0 = time.monotonic()
+    p = subprocess.run([sys.executable, "-c", code], cwd=src, env=env, stdout=subprocess.PIPE,
+                       stderr=subprocess.STDOUT, text=True)
+    ok = p.returncode == 0
+    print(f"{'ok  ' if ok else 'FAIL'} {time.monotonic() - t0:6.1f} s  python block: {code.splitlines()[0]} ...")
+    if not ok:
+        failed += 1
+        print(p.stdout[-3000:])
 for cmd in commands:
     run = cmd.replace("build/release", rel_build)
     t0 = time.monotonic()
@@ -41,5 +52,6 @@ for cmd in commands:
     if not ok:
         failed += 1
         print(p.stdout[-3000:])
-print(f"{len(commands) - failed} passed, {failed} failed")
+total = len(commands) + len(re.findall(r"^```python\n", text, flags=re.M))
+print(f"{total - failed} passed, {failed} failed")
 sys.exit(1 if failed else 0)
