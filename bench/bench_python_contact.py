@@ -31,7 +31,12 @@ cxx = {}  # model -> (wall, CPU) [s]
 for b in json.loads(p.stdout)["benchmarks"]:
     if b.get("aggregate_name") == "median":
         unit = {"ms": 1e-3, "us": 1e-6, "ns": 1e-9, "s": 1.0}[b["time_unit"]]
-        cxx[b["run_name"].split("/")[1]] = (b["real_time"] * unit, b["cpu_time"] * unit)
+        kind, model = b["run_name"].split("/")[:2]
+        if kind == "BM_ContactLoop":
+            cxx[model] = (b["real_time"] * unit, b["cpu_time"] * unit)
+        else:
+            print(f"C++ loop allocating its outputs per call, {model}: {b['real_time'] * unit * 1e3:.3f} ms wall, "
+                  f"{b['cpu_time'] * unit * 1e3:.3f} ms CPU")
 
 xi = np.linspace(0.0, 0.01, 100000)
 print(f"{'model':<10} {'C++ wall [ms]':>14} {'Python wall':>12} {'ratio':>6}   {'C++ CPU [ms]':>13} {'Python CPU':>11} {'ratio':>6}")
