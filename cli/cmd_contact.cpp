@@ -41,7 +41,8 @@ int run_contact(const ContactOptions& o) {
   mo.cache_dir = o.cache_dir;
   const auto model = contact::make_tangential_model(o.model, mo);
   const auto ws = model->make_workspace();
-  results::CsvWriter csv(o.out, contact_csv_columns());
+  // 17 significant digits: the file holds the doubles exactly (round trip).
+  results::CsvWriter csv(o.out, contact_csv_columns(), false, 1, 17);
   int invalid = 0;
   for (const auto& c : set.cases) {
     const TimedForces r = solve_timed(*model, c.input, ws.get());

@@ -20,6 +20,7 @@
 #include "cli/support_speed_range.hpp"
 #include "core/errors.hpp"
 #include "engine/analysis/critical_speed.hpp"
+#include "engine/analysis/mode_sweep.hpp"
 #include "engine/linearisation.hpp"
 #include "engine/scenario.hpp"
 #include "results/chart.hpp"
@@ -59,12 +60,12 @@ int run_modes(const ModesArgs& a) {
     freq[k] = {label, {}, {}, "markers", "", 0};
   }
   const int n = static_cast<int>(std::floor((a.v_max_kmh - a.v_min_kmh) / a.v_step_kmh + 1e-9)) + 1;
+  std::vector<double> speeds;
+  for (int i = 0; i < n; ++i) speeds.push_back((a.v_min_kmh + i * a.v_step_kmh) / 3.6);
+  const auto all = engine::modes_versus_speed(sc, speeds, a.count);
   for (int i = 0; i < n; ++i) {
     const double v_kmh = a.v_min_kmh + i * a.v_step_kmh;
-    engine::Model m = sc.model;
-    m.speed.v0 = v_kmh / 3.6;
-    m.speed.accel = 0.0;
-    const auto md = engine::modes(m, Eigen::VectorXd::Zero(m.n_states), true);
+    const auto& md = all[static_cast<std::size_t>(i)];
     for (int k = 0; k < a.count && k < static_cast<int>(md.size()); ++k) {
       const auto& mode = md[static_cast<std::size_t>(k)];
       csv.cell(v_kmh).cell(k + 1).cell(mode.frequency).cell(mode.damping_ratio).cell(mode.eigenvalue.real())

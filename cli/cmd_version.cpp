@@ -1,4 +1,5 @@
-// `railsim version`: the program version and the versions of its dependencies.
+// `railsim version`: the program version, the versions of its dependencies and
+// the data folder it reads (core/data_dir.hpp).
 #include <Eigen/Core>
 #include <boost/version.hpp>
 #include <fftw3.h>
@@ -10,10 +11,8 @@
 #include <cstdio>
 
 #include "cli/commands.hpp"
-
-#ifndef RAILSIM_VERSION
-#define RAILSIM_VERSION "unknown"
-#endif
+#include "core/data_dir.hpp"
+#include "core/version.hpp"
 #ifndef RAILSIM_YAMLCPP_VERSION
 #define RAILSIM_YAMLCPP_VERSION "unknown"
 #endif
@@ -24,7 +23,7 @@ void register_version(CLI::App& app, CommandRunner& run) {
   auto* cmd = app.add_subcommand("version", "Print the railsim version and dependency versions");
   cmd->callback([&run] {
     run = [] {
-      std::printf("railsim %s\n", RAILSIM_VERSION);
+      std::printf("railsim %s\n", railsim::kVersion);
       std::printf("  compiler      %s\n", __VERSION__);
       std::printf("  Eigen         %d.%d.%d\n", EIGEN_WORLD_VERSION, EIGEN_MAJOR_VERSION, EIGEN_MINOR_VERSION);
       std::printf("  SUNDIALS      %s\n", SUNDIALS_VERSION);
@@ -39,6 +38,8 @@ void register_version(CLI::App& app, CommandRunner& run) {
 #else
       std::printf("  MPI           not found at build time\n");
 #endif
+      const std::string data = find_data_dir();
+      std::printf("  data folder   %s\n", data.empty() ? "not found (set RAILSIM_DATA_DIR)" : data.c_str());
       return 0;
     };
   });

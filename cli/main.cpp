@@ -1,6 +1,7 @@
 // railsim: command-line front end. Parses arguments (CLI11), sets up logging
 // (spdlog, to stderr), runs one subcommand and maps failures to exit codes:
-// 0 success, 2 bad input, 3 numerical failure.
+// 0 success, 2 bad input, 3 numerical failure. `railsim --version` prints
+// "railsim X.Y.Z" (as help2man expects); `railsim version` says more.
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
@@ -9,10 +10,12 @@
 
 #include "cli/commands.hpp"
 #include "core/errors.hpp"
+#include "core/version.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"railsim: railway vehicle dynamics with pluggable wheel-rail contact"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("railsim ") + railsim::kVersion, "Print the version and exit");
   std::string log_level = "info";
   app.add_option("--log-level", log_level, "Logging level: trace, debug, info, warn, error, off")
       ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "critical", "off"}))

@@ -30,7 +30,7 @@ void add_geometry_options(CLI::App& cmd, GeometryOptions& o) {
   cmd.add_option("--y-min", o.y_min, "Smallest lateral shift [m] (positive to the left)")->capture_default_str();
   cmd.add_option("--y-max", o.y_max, "Largest lateral shift [m]")->capture_default_str();
   cmd.add_option("--y-step", o.y_step, "Lateral shift step [m]")->capture_default_str();
-  cmd.add_option("--cache-dir", o.cache_dir, "Contact-table cache folder (default $XDG_CACHE_HOME/railsim or ~/.cache/railsim)");
+  cmd.add_option("--cache-dir", o.cache_dir, "Contact-table cache folder (default $RAILSIM_CACHE_DIR, $XDG_CACHE_HOME/railsim or ~/.cache/railsim)");
   cmd.add_flag("--no-cache", o.no_cache, "Always compute the table; do not read or write the cache");
 }
 

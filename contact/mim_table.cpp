@@ -22,6 +22,9 @@
 #include "contact/hertz.hpp"
 #include "contact/kalker_coefficients.hpp"
 #include "contact/mim/mim_model.hpp"
+#include "core/atomic_file.hpp"
+#include "core/cache_dir.hpp"
+#include "core/content_hash.hpp"
 #include "core/errors.hpp"
 
 namespace railsim::contact {
@@ -29,15 +32,6 @@ namespace railsim::contact {
 namespace {
 
 constexpr char kMagic[8] = {'R', 'S', 'M', 'I', 'M', 'T', 'A', 'B'};
-
-std::uint64_t fnv1a(const void* data, std::size_t n, std::uint64_t h = 1469598103934665603ull) {
-  const auto* p = static_cast<const unsigned char*>(data);
-  for (std::size_t i = 0; i < n; ++i) {
-    h ^= p[i];
-    h *= 1099511628211ull;
-  }
-  return h;
-}
 
 // Little byte writer/reader for the table file.
 struct Bytes {
@@ -357,16 +351,11 @@ void MimTable::save(const std::string& path) const {
   b.put(static_cast<std::uint64_t>(values_.size()));
   b.buf.append(reinterpret_cast<const char*>(values_.data()), values_.size() * sizeof(double));
   b.put(fnv1a(b.buf.data(), b.buf.size()));
-  const std::string tmp = path + ".tmp" + std::to_string(static_cast<long>(::getpid())) + "_" +
-                          std::to_string(std::hash<std::thread::id>{}(std::this_thread::get_id()));
-  {
-    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-    f.write(b.buf.data(), static_cast<std::streamsize>(b.buf.size()));
-    if (!f) throw InputError("mim_table: cannot write '" + tmp + "'");
+  try {
+    write_file_atomically(path, b.buf);
+  } catch (const InputError& e) {
+    throw InputError(std::string("mim_table: ") + e.what());
   }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) throw InputError("mim_table: cannot rename '" + tmp + "' to '" + path + "': " + ec.message());
 }
 
 std::unique_ptr<MimTable> MimTable::load(const std::string& path, const MimTableSpec& expected) {
@@ -488,23 +477,7 @@ ContactForces MimTableModel::solve(const ContactInput& in, TangentialWorkspace* 
 
 // ---------------------------------------------------------------- cache
 
-std::string mim_table_cache_dir(const std::string& configured) {
-  std::string dir = configured;
-  if (dir.empty()) {
-    if (const char* e = std::getenv("RAILSIM_CACHE_DIR"); e && *e)
-      dir = e;
-    else if (const char* x = std::getenv("XDG_CACHE_HOME"); x && *x)
-      dir = std::string(x) + "/railsim";
-    else if (const char* h = std::getenv("HOME"); h && *h)
-      dir = std::string(h) + "/.cache/railsim";
-    else
-      dir = ".railsim_cache";
-  }
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) throw InputError("mim_table: cannot create cache folder '" + dir + "': " + ec.message());
-  return dir;
-}
+std::string mim_table_cache_dir(const std::string& configured) { return cache_dir(configured, "mim_table"); }
 
 std::string mim_table_cache_path(const MimTableSpec& spec, const std::string& configured_cache_dir) {
   char name[64];

@@ -1,9 +1,11 @@
 // Scenario YAML reader; see scenario.hpp.
 #include "engine/scenario.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 
+#include "contact/geometry/profile.hpp"
 #include "contact/geometry/wheel_rail_geometry.hpp"
 #include "contact/hertz.hpp"
 #include "contact/reduction.hpp"
@@ -25,6 +27,17 @@ namespace fs = std::filesystem;
 std::string resolve(const std::string& base, const std::string& p) {
   if (p.empty() || fs::path(p).is_absolute()) return p;
   return (fs::path(base) / p).lexically_normal().string();
+}
+
+// The file named by a scalar node, resolved against the scenario's folder; a
+// missing file is an InputError naming the scenario file, line and key.
+std::string existing_file(const InputNode& n, const std::string& base) {
+  const std::string path = resolve(base, n.as_string());
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec))
+    n.fail("file '" + n.as_string() + "' not found" +
+           (path != n.as_string() ? " (looked for " + path + ", relative to the scenario's folder)" : std::string()));
+  return path;
 }
 
 std::shared_ptr<const ContactGeometry> load_geometry(const InputNode& g, const std::string& base,
@@ -52,7 +65,7 @@ std::shared_ptr<const ContactGeometry> load_geometry(const InputNode& g, const s
   }
   if (type == "table") {
     g.allow_only({"type", "file"});
-    return std::make_shared<GeometryTable>(resolve(base, g.string("file")));
+    return std::make_shared<GeometryTable>(existing_file(g.at("file"), base));
   }
   if (type == "profiles") {
     g.allow_only({"type", "wheel", "rail", "inclination", "gauge", "gauge_depth", "flange_back", "back_face", "r0",
@@ -63,7 +76,13 @@ std::shared_ptr<const ContactGeometry> load_geometry(const InputNode& g, const s
       const std::string v = g.string(key);
       // A file relative to the scenario, or a shipped profile name.
       const std::string path = resolve(base, v);
-      return fs::exists(path) ? path : v;
+      if (fs::exists(path)) return path;
+      std::string lower = v;
+      for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      if (lower != "s1002" && lower != "uic60" && lower != "uic60_mbench" && lower != "uic60_true")
+        g.at(key).fail("file '" + v + "' not found (looked for " + path +
+                       ") and not a shipped profile name (" + contact::shipped_profile_names() + ")");
+      return v;
     };
     p.wheel = profile("wheel", p.wheel);
     p.rail = profile("rail", p.rail);
@@ -127,13 +146,13 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
   Scenario sc;
   sc.name = root.string_or("name", "");
   Model& m = sc.model;
-  load_vehicle(resolve(base, root.string("vehicle")), m);
+  load_vehicle(existing_file(root.at("vehicle"), base), m);
 
   // Track.
   const InputNode tn = root.at("track");
   std::shared_ptr<const tracks::Track> track;
   if (tn.is_scalar()) {
-    track = std::make_shared<const tracks::Track>(tracks::load_track(resolve(base, tn.as_string())));
+    track = std::make_shared<const tracks::Track>(tracks::load_track(existing_file(tn, base)));
   } else {
     track = std::make_shared<const tracks::Track>(tracks::load_track(tn, base, "track"));
   }

@@ -6,11 +6,8 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "core/data_dir.hpp"
 #include "results/json_writer.hpp"
-
-#ifndef RAILSIM_PLOT_SCRIPT
-#define RAILSIM_PLOT_SCRIPT "results/plots/render_chart.py"
-#endif
 
 namespace railsim::results {
 
@@ -78,9 +75,12 @@ bool draw(const Chart& chart, const std::string& png_path) {
   const std::string spec_path = png_path + ".json";
   spec.write_file(spec_path);
 
-  std::string script = RAILSIM_PLOT_SCRIPT;
-  if (!std::filesystem::exists(script)) {
-    spdlog::warn("chart {}: plotting script {} not found; data kept in {}", png_path, script, spec_path);
+  // The chart script ships in the data folder (plots/render_chart.py).
+  const std::string data = find_data_dir();
+  const std::string script = data + "/plots/render_chart.py";
+  if (data.empty() || !std::filesystem::exists(script)) {
+    spdlog::warn("chart {}: plotting script {} not found (set RAILSIM_DATA_DIR to railsim's data folder); data kept in {}",
+                 png_path, data.empty() ? std::string("plots/render_chart.py") : script, spec_path);
     return false;
   }
   const std::string python = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";

@@ -1,12 +1,10 @@
-// Minimal JSON document builder; see json_writer.hpp.
+// JSON documents through nlohmann-json; see json_writer.hpp.
 #include "results/json_writer.hpp"
 
 #include <cmath>
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
+#include <nlohmann/json.hpp>
 
-#include "core/errors.hpp"
+#include "core/atomic_file.hpp"
 
 namespace railsim::results {
 
@@ -35,98 +33,35 @@ Json& Json::operator[](const std::string& key) {
   return set(key, Json::object());
 }
 
-namespace {
-
-void escape(std::string& out, const std::string& s) {
-  out += '"';
-  for (unsigned char c : s) {
-    switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\t': out += "\\t"; break;
-      case '\r': out += "\\r"; break;
-      default:
-        if (c < 0x20) {
-          char buf[8];
-          std::snprintf(buf, sizeof buf, "\\u%04x", c);
-          out += buf;
+nlohmann::ordered_json Json::to_nlohmann() const {
+  using nlohmann::ordered_json;
+  return std::visit(
+      [](const auto& v) -> ordered_json {
+        using T = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<T, std::nullptr_t>) {
+          return nullptr;
+        } else if constexpr (std::is_same_v<T, double>) {
+          return std::isfinite(v) ? ordered_json(v) : ordered_json(nullptr);
+        } else if constexpr (std::is_same_v<T, Object>) {
+          ordered_json o = ordered_json::object();
+          for (const auto& kv : v) o[kv.first] = kv.second.to_nlohmann();
+          return o;
+        } else if constexpr (std::is_same_v<T, Array>) {
+          ordered_json a = ordered_json::array();
+          for (const auto& e : v) a.push_back(e.to_nlohmann());
+          return a;
         } else {
-          out += static_cast<char>(c);
+          return ordered_json(v);
         }
-    }
-  }
-  out += '"';
-}
-
-void newline(std::string& out, int indent, int level) {
-  if (indent <= 0) return;
-  out += '\n';
-  out.append(static_cast<std::size_t>(indent * level), ' ');
-}
-
-}  // namespace
-
-void Json::dump_to(std::string& out, int indent, int level) const {
-  if (std::holds_alternative<std::nullptr_t>(value_)) {
-    out += "null";
-  } else if (const double* d = std::get_if<double>(&value_)) {
-    if (!std::isfinite(*d)) {
-      out += "null";
-    } else {
-      char buf[32];
-      std::snprintf(buf, sizeof buf, "%.12g", *d);
-      out += buf;
-    }
-  } else if (const bool* b = std::get_if<bool>(&value_)) {
-    out += *b ? "true" : "false";
-  } else if (const std::string* s = std::get_if<std::string>(&value_)) {
-    escape(out, *s);
-  } else if (const Object* o = std::get_if<Object>(&value_)) {
-    out += '{';
-    bool first = true;
-    for (const auto& kv : *o) {
-      if (!first) out += ',';
-      first = false;
-      newline(out, indent, level + 1);
-      escape(out, kv.first);
-      out += indent > 0 ? ": " : ":";
-      kv.second.dump_to(out, indent, level + 1);
-    }
-    if (!o->empty()) newline(out, indent, level);
-    out += '}';
-  } else if (const Array* a = std::get_if<Array>(&value_)) {
-    out += '[';
-    bool first = true;
-    for (const auto& v : *a) {
-      if (!first) out += ',';
-      first = false;
-      newline(out, indent, level + 1);
-      v.dump_to(out, indent, level + 1);
-    }
-    if (!a->empty()) newline(out, indent, level);
-    out += ']';
-  }
+      },
+      value_);
 }
 
 std::string Json::dump(int indent) const {
-  std::string out;
-  dump_to(out, indent, 0);
-  out += '\n';
-  return out;
+  return to_nlohmann().dump(indent > 0 ? indent : -1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) +
+         "\n";
 }
 
-void Json::write_file(const std::string& path, int indent) const {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream f(tmp, std::ios::binary);
-    if (!f) throw InputError(path + ": cannot open for writing");
-    f << dump(indent);
-    if (!f) throw InputError(path + ": write failed");
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) throw InputError(path + ": cannot rename temporary file: " + ec.message());
-}
+void Json::write_file(const std::string& path, int indent) const { write_file_atomically(path, dump(indent)); }
 
 }  // namespace railsim::results

@@ -9,8 +9,10 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
-#include <unistd.h>
 
+#include "core/atomic_file.hpp"
+#include "core/cache_dir.hpp"
+#include "core/content_hash.hpp"
 #include "core/errors.hpp"
 
 namespace railsim::contact {
@@ -25,18 +27,6 @@ std::string num(double v) {
   return buf;
 }
 
-struct Fnv {
-  unsigned long long h = 1469598103934665603ULL;
-  void mix(const void* p, std::size_t n) {
-    const auto* b = static_cast<const unsigned char*>(p);
-    for (std::size_t i = 0; i < n; ++i) {
-      h ^= b[i];
-      h *= 1099511628211ULL;
-    }
-  }
-  void mix(double v) { mix(&v, sizeof v); }
-  void mix(unsigned long long v) { mix(&v, sizeof v); }
-};
 }  // namespace
 
 void TableGrid::validate() const {
@@ -92,24 +82,20 @@ ContactTable ContactTable::build(const WheelRailGeometry& geometry, const TableG
   return t;
 }
 
-std::string ContactTable::default_cache_dir() {
-  if (const char* x = std::getenv("XDG_CACHE_HOME"); x && *x) return std::string(x) + "/railsim";
-  if (const char* h = std::getenv("HOME"); h && *h) return std::string(h) + "/.cache/railsim";
-  return ".railsim_cache";
-}
+std::string ContactTable::default_cache_dir() { return resolve_cache_dir(); }
 
 unsigned long long ContactTable::cache_key(const WheelRailGeometry& geometry, const Profile& wheel,
                                            const Profile& rail, const TableGrid& grid) {
-  Fnv f;
-  f.mix(kMagic, sizeof kMagic);
-  f.mix(wheel.content_hash());
-  f.mix(rail.content_hash());
+  ContentHash f;
+  f.bytes(kMagic, sizeof kMagic);
+  f.value(wheel.content_hash());
+  f.value(rail.content_hash());
   const TrackSetup& s = geometry.setup();
   const SearchOptions& o = geometry.options();
   for (double v : {s.gauge, s.gauge_depth, s.flange_back, s.back_face, s.r0, s.inclination, grid.y_min, grid.y_max,
                    grid.y_step, o.second_gap_max, o.wheel_step, o.rail_step, o.flange_margin})
-    f.mix(v);
-  return f.h;
+    f.value(v);
+  return f.value();
 }
 
 ContactTable ContactTable::cached(const WheelRailGeometry& geometry, const Profile& wheel, const Profile& rail,
@@ -144,20 +130,21 @@ ContactTable ContactTable::cached(const WheelRailGeometry& geometry, const Profi
     }
   }
   ContactTable t = build(geometry, grid);
+  // The cache is an optimisation: a folder or file that cannot be written
+  // leaves the table computed, not an error.
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
-  const std::string tmp = path + ".tmp" + std::to_string(static_cast<long>(::getpid()));
-  std::ofstream out(tmp, std::ios::binary);
-  if (out) {
-    const unsigned long long rows = t.rows_, cols = kColumns;
-    out.write(kMagic, 8);
-    out.write(reinterpret_cast<const char*>(&key), sizeof key);
-    out.write(reinterpret_cast<const char*>(&rows), sizeof rows);
-    out.write(reinterpret_cast<const char*>(&cols), sizeof cols);
-    out.write(reinterpret_cast<const char*>(t.data_.data()), static_cast<std::streamsize>(t.data_.size() * sizeof(double)));
-    out.close();
-    if (out) std::filesystem::rename(tmp, path, ec);
-    if (ec || !out) std::filesystem::remove(tmp, ec);
+  try {
+    write_file_atomically(path, [&](std::ostream& out) {
+      const unsigned long long rows = t.rows_, cols = kColumns;
+      out.write(kMagic, 8);
+      out.write(reinterpret_cast<const char*>(&key), sizeof key);
+      out.write(reinterpret_cast<const char*>(&rows), sizeof rows);
+      out.write(reinterpret_cast<const char*>(&cols), sizeof cols);
+      out.write(reinterpret_cast<const char*>(t.data_.data()),
+                static_cast<std::streamsize>(t.data_.size() * sizeof(double)));
+    });
+  } catch (const InputError&) {
   }
   return t;
 }

@@ -15,8 +15,9 @@
 // out ordered by vertical gap; between rows the first one's gap may be > 0.
 // Cache: file contact_table_<16 hex digits>.bin in the cache folder; the key is
 // an FNV-1a hash of a format version, both profiles' points, the track set-up,
-// the y grid and the search options. Default folder: $XDG_CACHE_HOME/railsim, else
-// ~/.cache/railsim. A corrupt or mismatching file is rebuilt.
+// the y grid and the search options. Default folder: core/cache_dir.hpp
+// ($RAILSIM_CACHE_DIR, $XDG_CACHE_HOME/railsim, ~/.cache/railsim). Written
+// atomically (core/atomic_file.hpp); a corrupt or mismatching file is rebuilt.
 #pragma once
 
 #include <array>

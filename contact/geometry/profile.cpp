@@ -8,11 +8,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/content_hash.hpp"
+#include "core/data_dir.hpp"
 #include "core/errors.hpp"
-
-#ifndef RAILSIM_PROFILE_DIR
-#define RAILSIM_PROFILE_DIR ""
-#endif
 
 namespace railsim::contact {
 
@@ -237,24 +235,16 @@ Profile Profile::rotated(double angle, const std::string& new_source) const {
 }
 
 unsigned long long Profile::content_hash() const {
-  unsigned long long h = 1469598103934665603ULL;
-  auto mix = [&h](const void* p, std::size_t len) {
-    const auto* b = static_cast<const unsigned char*>(p);
-    for (std::size_t i = 0; i < len; ++i) {
-      h ^= b[i];
-      h *= 1099511628211ULL;
-    }
-  };
-  const int k = kind_ == ProfileKind::wheel ? 1 : 0;
-  mix(&k, sizeof k);
-  mix(y_.data(), y_.size() * sizeof(double));
-  mix(z_.data(), z_.size() * sizeof(double));
-  return h;
+  ContentHash h;
+  h.value(kind_ == ProfileKind::wheel ? 1 : 0);
+  h.bytes(y_.data(), y_.size() * sizeof(double));
+  h.bytes(z_.data(), z_.size() * sizeof(double));
+  return h.value();
 }
 
 std::string shipped_profile_dir() {
-  if (const char* env = std::getenv("RAILSIM_PROFILE_DIR")) return env;
-  return RAILSIM_PROFILE_DIR;
+  if (const char* env = std::getenv("RAILSIM_PROFILE_DIR"); env && *env) return env;
+  return railsim::data_path("profiles");
 }
 
 std::string shipped_profile_names() {

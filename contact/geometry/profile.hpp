@@ -67,7 +67,7 @@ Profile read_profile(const std::string& path_or_name, ProfileKind kind, const Pr
 // UIC60_MBench (the same file as given, already canted 1/40: inclination none);
 // UIC60_true (CONTACT testbank upright UIC60 with vertical sides). Also
 // shipped_profile_names() and the folder that holds them
-// (env RAILSIM_PROFILE_DIR overrides the built-in location).
+// ($RAILSIM_PROFILE_DIR, else profiles/ in the data folder, core/data_dir.hpp).
 std::string shipped_profile_names();
 std::string shipped_profile_dir();
 

@@ -17,6 +17,7 @@
 #include <sstream>
 #include <thread>
 
+#include "core/atomic_file.hpp"
 #include "core/errors.hpp"
 
 #ifdef RAILSIM_HAVE_MPI
@@ -264,13 +265,10 @@ void write_sweep_file(const std::string& output, const std::vector<std::string>&
                       const std::vector<SweepResult>& rows) {
   SweepOptions o;
   o.result_columns = columns;
-  const std::string tmp = output + ".tmp";
-  {
-    std::ofstream f(tmp, std::ios::binary);
+  write_file_atomically(output, [&](std::ostream& f) {
     f << header_line(o) << "\n";
     for (const auto& r : rows) f << result_line(r) << "\n";
-  }
-  fs::rename(tmp, output);
+  });
 }
 
 }  // namespace railsim::engine

@@ -7,24 +7,23 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <regex>
 #include <set>
 #include <sstream>
 #include <string>
 
 #include "results/csv_writer.hpp"
+#include "json_support.hpp"
 #include "test_support.hpp"
 
 using railsim::test::run_railsim;
 
 namespace {
 
-// The first number after "key": in a JSON text (NaN when absent or null).
-double json_number(const std::string& json, const std::string& key) {
-  const std::regex re("\"" + key + "\":\\s*(-?[0-9.eE+-]+)");
-  std::smatch m;
-  if (!std::regex_search(json, m, re)) return NAN;
-  return std::stod(m[1].str());
+using railsim::test::json_number;
+
+// A number of a summary.json file (NaN when null or absent), parsed with nlohmann.
+double summary_number(const std::string& path, const std::string& key) {
+  return json_number(railsim::test::read_json(path), key);
 }
 
 const std::string kScenario = railsim::test::data_path("scenarios/single_wheelset_flange.yaml");
@@ -38,12 +37,13 @@ TEST_CASE("railsim critical-speed: summary, charts and the reduction baseline", 
   const auto r = run_railsim("critical-speed '" + kScenario + "' --out '" + dir + "'" + kSweep + " --reduction 0.6");
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
-  const std::string s = railsim::test::read_text(dir + "/summary.json");
+  const auto s = railsim::test::read_json(dir + "/summary.json");
   for (const char* key : {"critical_speed_kmh", "linear_critical_speed_kmh", "method", "contact_model", "reduction",
-                          "unreduced", "critical_speed_change_percent", "settings"})
-    CHECK(s.find(std::string("\"") + key + "\"") != std::string::npos);
-  CHECK(s.find("\"method\": \"bifurcation\"") != std::string::npos);
-  CHECK(s.find("\"reduction\": \"uniform 0.6") != std::string::npos);
+                          "unreduced", "settings"})
+    CHECK(s.contains(key));
+  CHECK(s["unreduced"].contains("critical_speed_change_percent"));
+  CHECK(s["method"] == "bifurcation");
+  CHECK(s["reduction"].get<std::string>().rfind("uniform 0.6", 0) == 0);
   CHECK(std::filesystem::exists(dir + "/bifurcation.png"));
   CHECK(std::filesystem::exists(dir + "/unreduced/bifurcation.png"));
 
@@ -51,7 +51,7 @@ TEST_CASE("railsim critical-speed: summary, charts and the reduction baseline", 
   // 5 km/h step, with and without the reduction.
   const double v = json_number(s, "critical_speed_kmh"), v_lin = json_number(s, "linear_critical_speed_kmh");
   CHECK(std::abs(v - v_lin) <= 5.0);
-  const std::string base = s.substr(s.find("\"unreduced\""));
+  const auto& base = s["unreduced"];
   const double v0 = json_number(base, "critical_speed_kmh"), v0_lin = json_number(base, "linear_critical_speed_kmh");
   CHECK(std::abs(v0 - v0_lin) <= 5.0);
   CHECK(v0_lin == Approx(164.1).margin(0.3));  // physics-reference.md 8.1: 45.59 m/s
@@ -68,7 +68,7 @@ TEST_CASE("railsim critical-speed: summary, charts and the reduction baseline", 
   std::set<std::string> keys;
   for (const auto& row : after.rows) keys.insert(row.front());
   CHECK(keys.size() == after.rows.size());
-  CHECK(json_number(railsim::test::read_text(dir + "/summary.json"), "critical_speed_kmh") == v);
+  CHECK(summary_number(dir + "/summary.json", "critical_speed_kmh") == v);
 }
 
 TEST_CASE("railsim critical-speed --method ramping writes the ramp record", "[cli][critical_speed]") {
@@ -76,7 +76,7 @@ TEST_CASE("railsim critical-speed --method ramping writes the ramp record", "[cl
   const auto r = run_railsim("critical-speed '" + kScenario + "' --method ramping --v-min 140 --v-max 185 --deceleration 0.5 --out '" + dir + "'");
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
-  const std::string s = railsim::test::read_text(dir + "/summary.json");
+  const auto s = railsim::test::read_json(dir + "/summary.json");
   const double v = json_number(s, "critical_speed_kmh"), v_lin = json_number(s, "linear_critical_speed_kmh");
   // Ramping at 0.5 m/s^2 trails the eigenvalue answer by the decay time of the
   // transients: within 3 % below it (measured 1.6 %).
@@ -131,7 +131,7 @@ TEST_CASE("railsim critical-speed under mpirun -np 2 gives the thread run's swee
   // Same points, same values, same order; the part files of the ranks are merged away.
   CHECK(railsim::test::read_text(dir + "/mpi/bifurcation.csv") == railsim::test::read_text(dir + "/threads/bifurcation.csv"));
   CHECK_FALSE(std::filesystem::exists(dir + "/mpi/bifurcation.csv.part0"));
-  CHECK(json_number(railsim::test::read_text(dir + "/mpi/summary.json"), "critical_speed_kmh") ==
-        json_number(railsim::test::read_text(dir + "/threads/summary.json"), "critical_speed_kmh"));
+  CHECK(summary_number(dir + "/mpi/summary.json", "critical_speed_kmh") ==
+        summary_number(dir + "/threads/summary.json", "critical_speed_kmh"));
 }
 #endif

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "results/csv_writer.hpp"
+#include "json_support.hpp"
 #include "test_support.hpp"
 
 using namespace railsim;
@@ -21,11 +22,11 @@ TEST_CASE("railsim run writes channels and summary", "[engine][cli]") {
   double maxy = 0;
   for (std::size_t i = 0; i < csv.rows.size(); ++i) maxy = std::max(maxy, std::abs(csv.number(i, "ws1.y")));
   CHECK(maxy > 0.005);
-  const std::string js = test::read_text(out + "/summary.json");
-  CHECK(js.find("\"status\": \"ok\"") != std::string::npos);
-  CHECK(js.find("\"rhs_calls\"") != std::string::npos);
-  CHECK(js.find("\"real_time_factor\"") != std::string::npos);
-  CHECK(js.find("\"max_lateral_shift\"") != std::string::npos);
+  const auto js = test::read_json(out + "/summary.json");
+  CHECK(js["status"] == "ok");
+  CHECK(js["integrator_statistics"]["rhs_calls"].get<long>() > 0);
+  CHECK(js["real_time_factor"].get<double>() > 0.0);
+  CHECK(js["max_lateral_shift"].get<double>() == Approx(maxy).epsilon(1e-9));
   // Y/Q and wear-number channels.
   CHECK(csv.number(400, "ws1.L.YQ") == Approx(csv.number(400, "ws1.L.Y") / csv.number(400, "ws1.L.Q")));
   CHECK(csv.number(400, "ws1.R.Tgamma") >= 0.0);
@@ -37,18 +38,27 @@ TEST_CASE("railsim run: running safety and curving of the coach in the R 300 m c
       test::run_railsim("run " + test::source_path("scenarios/manchester_coach_curve_R300.yaml") + " --out " + out);
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
-  const std::string js = test::read_text(out + "/summary.json");
-  for (const char* key : {"\"running_safety\"", "\"nadal_limit\"", "\"flange_angle_deg\"", "\"yq_instantaneous\"",
-                          "\"yq_2m\"", "\"sum_y_2m\"", "\"wheel_unloading\"", "\"en14363_pass\"", "\"curving\"",
-                          "\"angle_of_attack_mrad\"", "\"Tgamma\"", "\"sum_Y_expected_M_a_nc\""})
-    CHECK(js.find(key) != std::string::npos);
+  const auto js = test::read_json(out + "/summary.json");
+  const auto& rs = js["running_safety"];
+  for (const char* key : {"nadal_limit", "flange_angle_deg", "wheelsets", "limits", "en14363_evaluated"})
+    CHECK(rs.contains(key));
+  const auto& w0 = rs["wheelsets"][0];
+  for (const char* key : {"sum_y_2m", "wheel_unloading", "en14363_pass"}) CHECK(w0.contains(key));
+  CHECK(w0["wheels"]["left"].contains("yq_instantaneous"));
+  CHECK(w0["wheels"]["left"].contains("yq_2m"));
+  const auto& c0 = js["curving"]["curves"][0];
+  CHECK(c0.contains("sum_Y_expected_M_a_nc"));
+  CHECK(c0["wheelsets"][0].contains("angle_of_attack_mrad"));
+  CHECK(c0["wheelsets"][0]["wheels"]["left"].contains("Tgamma"));
   // S1002/UIC60 table: flank angle ~70 deg from the geometry (no fallback), mu = 0.3:
   // Nadal (tan g - 0.3) / (1 + 0.3 tan g) = 1.347 at 70.11 deg.
-  CHECK(js.find("\"flange_angle_fallback\": false") != std::string::npos);
-  CHECK(js.find("\"nadal_limit\": 1.34") != std::string::npos);
-  CHECK(js.find("\"radius_m\": 300") != std::string::npos);
+  CHECK(rs["flange_angle_fallback"] == false);
+  const double g = rs["flange_angle_deg"].get<double>() * std::acos(-1.0) / 180.0;
+  CHECK(rs["nadal_limit"].get<double>() == Approx((std::tan(g) - 0.3) / (1 + 0.3 * std::tan(g))).epsilon(1e-9));
+  CHECK(rs["nadal_limit"].get<double>() == Approx(1.347).margin(0.005));
+  CHECK(c0["radius_m"].get<double>() == Approx(300.0).epsilon(1e-9));
   // 102 mm cant deficiency at 80 km/h: safe (EN 14363 and Nadal).
-  CHECK(js.find("\"running_safety\": {\n    \"pass\": true") != std::string::npos);
+  CHECK(rs["pass"] == true);
   CHECK(std::ifstream(out + "/yq.png").good());
   const auto csv = results::read_csv(out + "/channels.csv");
   // Leading wheel, outer (left) side in the body of the right-hand curve (reference 300 m):
@@ -69,5 +79,7 @@ TEST_CASE("railsim run: bad scenario exits 2, numerical failure exits 3", "[engi
   INFO(r.output);
   CHECK(r.exit_code == 3);
   CHECK(r.output.find("exceeds the admissible") != std::string::npos);
-  CHECK(test::read_text(out + "/summary.json").find("\"status\": \"failed\"") != std::string::npos);
+  const auto failed = test::read_json(out + "/summary.json");
+  CHECK(failed["status"] == "failed");
+  CHECK(failed["error"].get<std::string>().find("exceeds the admissible") != std::string::npos);
 }

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "results/chart.hpp"
+#include "json_support.hpp"
 #include "test_support.hpp"
 
 using namespace railsim::results;
@@ -46,8 +47,10 @@ TEST_CASE("a chart with panels renders small multiples", "[results][chart]") {
   const std::string png = dir + "/m.png";
   REQUIRE(draw(c, png));
   CHECK(std::filesystem::file_size(png) > 5000);
-  std::ifstream j(png + ".json");
-  const std::string json((std::istreambuf_iterator<char>(j)), std::istreambuf_iterator<char>());
-  CHECK(json.find("\"panels\"") != std::string::npos);
-  CHECK(json.find("\"panel\": 2") != std::string::npos);
+  const auto spec = railsim::test::read_json(png + ".json");
+  CHECK(spec["panels"].is_array());
+  CHECK(spec["annotations"][0]["panel"] == 2);
+  CHECK(spec["series"].size() == 6);
+  CHECK(spec["series"][5]["panel"] == 2);
+  CHECK(spec["series"][1]["y"][0].get<double>() == 2.0);
 }

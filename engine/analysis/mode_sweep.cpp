@@ -1,0 +1,23 @@
+// Modes of the linearised vehicle versus speed; see mode_sweep.hpp.
+#include "engine/analysis/mode_sweep.hpp"
+
+#include "core/errors.hpp"
+
+namespace railsim::engine {
+
+std::vector<std::vector<Mode>> modes_versus_speed(const Scenario& sc, const std::vector<double>& speeds, int count) {
+  if (count < 1) throw InputError("modes: count " + std::to_string(count) + ": expected at least 1");
+  std::vector<std::vector<Mode>> out;
+  out.reserve(speeds.size());
+  for (const double v : speeds) {
+    Model m = sc.model;
+    m.speed.v0 = v;
+    m.speed.accel = 0.0;
+    auto md = modes(m, Eigen::VectorXd::Zero(m.n_states), true);
+    if (md.size() > static_cast<std::size_t>(count)) md.resize(static_cast<std::size_t>(count));
+    out.push_back(std::move(md));
+  }
+  return out;
+}
+
+}  // namespace railsim::engine

@@ -1,0 +1,80 @@
+# Scenarios from Python: loaded from YAML or built from dicts, run (channels and
+# summary as `railsim run` writes them), modes (as `railsim modes`), errors
+# naming the scenario file, line and key.
+import csv
+import json
+
+import numpy as np
+import pytest
+import yaml
+
+import railsim
+from conftest import source
+
+SINGLE = source("scenarios", "single_wheelset.yaml")
+
+
+def test_run_matches_the_program(cli, tmp_path):
+    sc = railsim.load_scenario(SINGLE)
+    assert sc.states > 0 and sc.name
+    r = railsim.run(sc)
+    ch = r.as_dict()
+    assert r.summary["status"] == "ok"
+    assert r.data.shape == (801, len(r.names))  # 4 s every 5 ms and t = 0
+    code, text = cli("run", SINGLE, "--out", tmp_path)
+    assert code == 0, text
+    with open(tmp_path / "channels.csv") as f:
+        rows = list(csv.DictReader(f))
+    assert list(rows[0].keys()) == r.names
+    for name in ("time", "ws1.y", "ws1.L.Q", "ws1.L.YQ"):
+        np.testing.assert_allclose([float(x[name]) for x in rows], ch[name], rtol=1e-9, atol=1e-12, err_msg=name)
+    with open(tmp_path / "summary.json") as f:
+        s = json.load(f)
+    assert list(s.keys()) == list(r.summary.keys())
+    assert s["max_lateral_shift"] == pytest.approx(r.summary["max_lateral_shift"], rel=1e-12)
+    assert r.summary["max_lateral_shift"] == pytest.approx(np.max(np.abs(ch["ws1.y"])), rel=1e-9)
+    assert s["integrator_statistics"] == r.summary["integrator_statistics"]
+
+
+def test_scenario_from_a_dict_and_pandas(tmp_path):
+    with open(SINGLE) as f:
+        spec = yaml.safe_load(f)
+    spec["duration"] = 1.0
+    r = railsim.run(railsim.scenario(spec, base_dir=source("scenarios")), out=tmp_path)
+    assert r.data.shape[0] == 201
+    assert (tmp_path / "summary.json").exists() and (tmp_path / "channels.csv").exists()
+    try:
+        import pandas  # noqa: F401
+        assert list(r.channels.columns) == r.names
+    except ImportError:
+        assert isinstance(r.channels, dict) and set(r.channels) == set(r.names)
+
+
+def test_scenario_errors_name_file_line_and_key(tmp_path):
+    with open(SINGLE) as f:
+        text = f.read()
+    bad = tmp_path / "bad.yaml"
+    bad.write_text(text.replace("../vehicles/single_wheelset.yaml", "../vehicles/no_such_vehicle.yaml"))
+    line = next(i + 1 for i, l in enumerate(bad.read_text().splitlines()) if "no_such_vehicle" in l)
+    with pytest.raises(railsim.InputError, match=rf"bad\.yaml:{line}: key 'vehicle'.*no_such_vehicle.yaml.*not found"):
+        railsim.load_scenario(bad)
+    with open(SINGLE) as f:
+        spec = yaml.safe_load(f)
+    spec["speed_kmh"] = -5
+    spec.pop("speed", None)
+    with pytest.raises(railsim.InputError, match=r"<python dict>:\d+: key 'speed_kmh'"):
+        railsim.scenario(spec, base_dir=source("scenarios"))
+
+
+def test_modes_match_the_program(cli, tmp_path):
+    sc = railsim.load_scenario(SINGLE)
+    m = railsim.modes(sc, 50, 150, 50, count=3)
+    code, text = cli("modes", SINGLE, "--v-min", 50, "--v-max", 150, "--v-step", 50, "--count", 3, "--out", tmp_path)
+    assert code == 0, text
+    with open(tmp_path / "modes.csv") as f:
+        rows = list(csv.DictReader(f))
+    assert len(rows) == m["speed_kmh"].size
+    np.testing.assert_allclose([float(r["damping_ratio"]) for r in rows], m["damping_ratio"], rtol=1e-8, atol=1e-12)
+    np.testing.assert_allclose([float(r["frequency_hz"]) for r in rows], m["frequency_hz"], rtol=1e-8)
+    if m["linear_critical_speed_kmh"] is not None:
+        assert f"{m['linear_critical_speed_kmh']:.1f} km/h" in text
