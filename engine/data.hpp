@@ -41,6 +41,10 @@ struct Data {
   // two bodies act on.
   std::vector<BodyMotion> vehicle_motion;
   std::vector<WheelOutput> wheel;      // 2 per wheelset: left, right
+  // State derivative at the reported output: simulate() (simulation.hpp) sets
+  // it before calling the observer, so recorders can form accelerations
+  // (engine/analysis/run_history.hpp). Empty in other uses of Data.
+  Eigen::VectorXd xdot;
   std::vector<std::unique_ptr<contact::TangentialWorkspace>> workspace;  // per wheel
   double t = 0.0, V = 0.0, s = 0.0;
   long rhs_calls = 0;

@@ -142,7 +142,7 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
   root.allow_only({"name", "description", "vehicle", "track", "speed", "speed_kmh", "acceleration",
                    "start_distance", "duration", "output_interval", "wheelset_model", "max_lateral_shift",
                    "wheelset_roll",
-                   "contact", "integrator", "initial", "critical_speed"});
+                   "contact", "integrator", "initial", "critical_speed", "running_safety"});
   Scenario sc;
   sc.name = root.string_or("name", "");
   Model& m = sc.model;
@@ -262,6 +262,7 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
   m.coupling = WheelRailCoupling(co);
   for (auto& w : m.wheelsets) w.hertz_q0[0] = w.hertz_q0[1] = q0;
   if (auto cs = root.find("critical_speed")) sc.critical_speed = load_critical_speed_settings(*cs);
+  sc.running_safety = root.find("running_safety");
   sc.x0 = Eigen::VectorXd::Zero(m.n_states);
   if (auto init = root.find("initial")) {
     for (const auto& key : init->keys()) {

@@ -32,9 +32,12 @@
 //     {v_min_kmh: 150, v_max_kmh: 350, v_step_kmh: 10, duration: 6, disturbance_mm: 5,
 //      small_disturbance_mm: 0.5, threshold_mm: 0.5, continuation: false,
 //      ramping: {v_start_kmh: 290, disturbance_mm: 0.5, deceleration: 0.5}}
+//   running_safety: {vehicle_category: passenger}  # optional: kept in Scenario::running_safety,
+//                                       # read by engine/analysis/safety_settings.hpp
 #pragma once
 
 #include <Eigen/Core>
+#include <optional>
 #include <string>
 
 #include "config/yaml_input.hpp"
@@ -60,6 +63,9 @@ struct CriticalSpeedSettings {
 struct Scenario {
   std::string name;
   std::string file;
+  // The scenario's `running_safety:` section, read by the run's evaluation
+  // (engine/analysis/safety_settings.hpp); empty when absent.
+  std::optional<config::InputNode> running_safety;
   Model model;  // finalized
   IntegratorOptions integrator;
   double duration = 1.0;

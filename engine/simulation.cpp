@@ -31,6 +31,7 @@ RunSummary simulate(const Model& model, const IntegratorOptions& options, const 
   const double cpu0 = thread_cpu_seconds();
   auto report = [&](double t) {
     rhs_or_throw(model, rec, t, x.data(), xdot.data());
+    rec.xdot = xdot;  // same size every time: no allocation after the first output
     for (std::size_t w = 0; w < model.wheelsets.size(); ++w) {
       const int qi = model.bodies[model.wheelsets[w].body].q_index[kLat];
       sum.max_abs_lateral[w] = std::max(sum.max_abs_lateral[w], std::abs(x[qi]));

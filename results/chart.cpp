@@ -25,9 +25,8 @@ std::string shell_quote(const std::string& s) {
   return out + "'";
 }
 
-}  // namespace
-
-bool draw(const Chart& chart, const std::string& png_path) {
+// Write the chart description next to the PNG; returns its path.
+std::string write_spec(const Chart& chart, const std::string& png_path) {
   Json spec = Json::object();
   spec.set("title", chart.title);
   spec.set("xlabel", chart.xlabel);
@@ -57,6 +56,32 @@ bool draw(const Chart& chart, const std::string& png_path) {
     lines.push(jl);
   }
   spec.set("lines", lines);
+  Json spans = Json::array();
+  for (const auto& sp : chart.spans) {
+    Json js = Json::object();
+    js.set("x0", sp.x0);
+    js.set("x1", sp.x1);
+    js.set("label", sp.label);
+    js.set("color", sp.color);
+    js.set("alpha", sp.alpha);
+    js.set("hatch", sp.hatch);
+    spans.push(js);
+  }
+  spec.set("spans", spans);
+  Json bands = Json::array();
+  for (const auto& b : chart.bands) {
+    Json jb = Json::object();
+    jb.set("label", b.label);
+    jb.set("x", numbers(b.x));
+    jb.set("y_low", numbers(b.y_low));
+    jb.set("y_high", numbers(b.y_high));
+    jb.set("color", b.color);
+    jb.set("alpha", b.alpha);
+    jb.set("panel", b.panel);
+    bands.push(jb);
+  }
+  spec.set("bands", bands);
+  spec.set("legend", chart.legend);
   Json ann = Json::array();
   for (std::size_t i = 0; i < chart.annotations.size(); ++i) {
     const auto& a = chart.annotations[i];
@@ -74,23 +99,40 @@ bool draw(const Chart& chart, const std::string& png_path) {
   spec.set("panel_columns", chart.panel_columns);
   const std::string spec_path = png_path + ".json";
   spec.write_file(spec_path);
+  return spec_path;
+}
 
+}  // namespace
+
+bool draw_all(const std::vector<std::pair<const Chart*, std::string>>& charts) {
+  if (charts.empty()) return true;
+  std::string args;
+  for (const auto& [chart, png] : charts) {
+    std::error_code ec;
+    std::filesystem::remove(png, ec);  // a stale PNG must not pass for a new one
+    args += " " + shell_quote(write_spec(*chart, png));
+  }
   // The chart script ships in the data folder (plots/render_chart.py).
   const std::string data = find_data_dir();
   const std::string script = data + "/plots/render_chart.py";
   if (data.empty() || !std::filesystem::exists(script)) {
-    spdlog::warn("chart {}: plotting script {} not found (set RAILSIM_DATA_DIR to railsim's data folder); data kept in {}",
-                 png_path, data.empty() ? std::string("plots/render_chart.py") : script, spec_path);
+    spdlog::warn("charts: plotting script {} not found (set RAILSIM_DATA_DIR to railsim's data folder); data kept "
+                 "in the .png.json files",
+                 data.empty() ? std::string("plots/render_chart.py") : script);
     return false;
   }
   const std::string python = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-  const std::string cmd = python + " " + shell_quote(script) + " " + shell_quote(spec_path) + " 2>&1";
-  if (std::system(cmd.c_str()) != 0 || !std::filesystem::exists(png_path)) {
-    spdlog::warn("chart {}: rendering failed (is python3-matplotlib installed?); data kept in {}", png_path,
-                 spec_path);
-    return false;
+  const std::string cmd = python + " " + shell_quote(script) + args + " 2>&1";
+  const bool ran = std::system(cmd.c_str()) == 0;
+  bool ok = true;
+  for (const auto& [chart, png] : charts) {
+    if (ran && std::filesystem::exists(png)) continue;
+    spdlog::warn("chart {}: rendering failed (is python3-matplotlib installed?); data kept in {}.json", png, png);
+    ok = false;
   }
-  return true;
+  return ok;
 }
+
+bool draw(const Chart& chart, const std::string& png_path) { return draw_all({{&chart, png_path}}); }
 
 }  // namespace railsim::results

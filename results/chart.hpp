@@ -6,6 +6,8 @@
 // problems (python3 or matplotlib missing) are reported, never fatal: the
 // numbers are already in the CSV files.
 //
+// Spans shade x ranges (behind the series); bands fill between two curves.
+//
 // Small multiples: when `panels` is not empty the figure is a grid of
 // sub-plots with shared axes, one per panel title; each series goes to the
 // panel with its index (`ChartSeries::panel`), reference lines and the axis
@@ -20,9 +22,28 @@ namespace railsim::results {
 struct ChartSeries {
   std::string label;
   std::vector<double> x, y;
-  std::string style = "line";  // "line", "markers", "crosses", "line+markers", "step"
+  // "line", "dashed", "dotted", "faint" (thin, light line), "markers", "crosses", "line+markers", "step"
+  std::string style = "line";
   std::string color;           // matplotlib colour; empty = automatic
   int panel = 0;               // sub-plot index when Chart::panels is used
+};
+
+// A filled band between two curves (e.g. an envelope).
+struct ChartBand {
+  std::string label;
+  std::vector<double> x, y_low, y_high;
+  std::string color = "0.6";
+  double alpha = 0.35;
+  int panel = 0;
+};
+
+// A shaded range of x (e.g. a curve or a defect along the track).
+struct ChartSpan {
+  double x0 = 0.0, x1 = 0.0;
+  std::string label;           // legend entry (the first span of each label only)
+  std::string color = "0.8";
+  double alpha = 0.2;
+  std::string hatch;           // matplotlib hatch ("//", "xx"); empty = none
 };
 
 struct ChartLine {
@@ -37,6 +58,9 @@ struct Chart {
   bool logx = false, logy = false;
   std::vector<ChartSeries> series;
   std::vector<ChartLine> lines;
+  std::vector<ChartSpan> spans;
+  std::vector<ChartBand> bands;
+  std::string legend = "best";  // legend placement: "best" (inside) or "outside" (right of the plot)
   // Optional annotated points (e.g. model names on a Pareto chart).
   std::vector<std::pair<std::string, std::pair<double, double>>> annotations;
   // Panel of each annotation (same order; missing entries = panel 0).
@@ -49,5 +73,9 @@ struct Chart {
 // Render `chart` to `png_path` (also writes png_path + ".json"). Returns true
 // when the PNG was produced; otherwise logs a warning and returns false.
 bool draw(const Chart& chart, const std::string& png_path);
+
+// Render several charts with one python3 process (saves its start-up, about a
+// second per chart). Returns true when every PNG was produced.
+bool draw_all(const std::vector<std::pair<const Chart*, std::string>>& charts);
 
 }  // namespace railsim::results

@@ -18,39 +18,59 @@ void check_input(const std::vector<double>& x, const std::vector<double>& y, dou
     if (!(x[i] > x[i - 1])) throw std::invalid_argument("sliding window: abscissa not strictly increasing");
 }
 
-// Integral over [a, b] of f(interpolated y), where `order` 1 integrates y and
-// 2 integrates y^2 (exact for piecewise-linear y). `i0` is a search hint.
-double integrate(const std::vector<double>& x, const std::vector<double>& y, double a, double b, int order,
-                 std::size_t& i0) {
-  while (i0 + 1 < x.size() && x[i0 + 1] <= a) ++i0;
-  double sum = 0.0;
-  for (std::size_t i = i0; i + 1 < x.size() && x[i] < b; ++i) {
-    const double x0 = std::max(a, x[i]);
-    const double x1 = std::min(b, x[i + 1]);
-    if (x1 <= x0) continue;
-    const double slope = (y[i + 1] - y[i]) / (x[i + 1] - x[i]);
-    const double y0 = y[i] + slope * (x0 - x[i]);
-    const double y1 = y[i] + slope * (x1 - x[i]);
-    const double h = x1 - x0;
-    if (order == 1)
-      sum += 0.5 * (y0 + y1) * h;
-    else
-      sum += h * (y0 * y0 + y0 * y1 + y1 * y1) / 3.0;
+// Sliding integrals by prefix sums: C[i] = integral from x[0] to x[i] of the
+// linearly interpolated y (order 1) or of its square (order 2), exact for
+// piecewise-linear signals; a window is the difference of two prefix values,
+// each completed by the part of its segment up to the window edge. O(1) per
+// window after one O(n) pass.
+class PrefixIntegral {
+ public:
+  PrefixIntegral(const std::vector<double>& x, const std::vector<double>& y, int order)
+      : x_(x), y_(y), order_(order), c_(x.size(), 0.0) {
+    for (std::size_t i = 0; i + 1 < x.size(); ++i) c_[i + 1] = c_[i] + part(i, x[i + 1] - x[i]);
   }
-  return sum;
-}
+  // Integral from x[0] to s (s clamped to the abscissa range); `j` is a
+  // non-decreasing search hint (s must not decrease between calls with one hint).
+  double at(double s, std::size_t& j) const {
+    s = std::clamp(s, x_.front(), x_.back());
+    while (j + 2 < x_.size() && x_[j + 1] <= s) ++j;
+    return c_[j] + part(j, s - x_[j]);
+  }
+
+ private:
+  // Integral over [x[i], x[i] + h] of segment i.
+  double part(std::size_t i, double h) const {
+    const double y0 = y_[i];
+    const double m = (y_[i + 1] - y_[i]) / (x_[i + 1] - x_[i]);
+    if (order_ == 1) return h * (y0 + 0.5 * m * h);
+    return h * (y0 * y0 + h * (y0 * m + m * m * h / 3.0));
+  }
+  const std::vector<double>& x_;
+  const std::vector<double>& y_;
+  int order_;
+  std::vector<double> c_;
+};
 
 WindowedSeries sliding(const std::vector<double>& x, const std::vector<double>& y, double window, double step,
                        int order) {
   check_input(x, y, window, step);
   WindowedSeries out;
-  std::size_t hint = 0;
+  const PrefixIntegral F(x, y, order);
+  std::size_t ja = 0, jb = 0;
   const double first = x.front() + 0.5 * window;
   const double last = x.back() - 0.5 * window;
+  const double tol = 1e-12 * std::max(1.0, std::fabs(last));
+  if (first <= last + tol) {
+    const auto count = static_cast<std::size_t>(std::floor((last + tol - first) / step)) + 1;
+    out.centre.reserve(count);
+    out.value.reserve(count);
+  }
   for (long k = 0;; ++k) {
     const double c = first + static_cast<double>(k) * step;
-    if (c > last + 1e-12 * std::max(1.0, std::fabs(last))) break;
-    const double v = integrate(x, y, c - 0.5 * window, c + 0.5 * window, order, hint) / window;
+    if (c > last + tol) break;
+    const double hi = F.at(c + 0.5 * window, jb);
+    const double lo = F.at(c - 0.5 * window, ja);
+    const double v = (hi - lo) / window;
     out.centre.push_back(c);
     out.value.push_back(order == 1 ? v : std::sqrt(std::max(0.0, v)));
   }
@@ -69,13 +89,36 @@ WindowedSeries sliding_rms(const std::vector<double>& x, const std::vector<doubl
   return sliding(x, y, window, step, 2);
 }
 
-double percentile(std::vector<double> values, double p) {
-  if (values.empty()) return std::numeric_limits<double>::quiet_NaN();
-  std::sort(values.begin(), values.end());
+namespace {
+double sorted_percentile(const std::vector<double>& values, double p) {
   const double pos = std::clamp(p, 0.0, 100.0) / 100.0 * static_cast<double>(values.size() - 1);
   const auto lo = static_cast<std::size_t>(std::floor(pos));
   const auto hi = std::min(lo + 1, values.size() - 1);
   return values[lo] + (pos - static_cast<double>(lo)) * (values[hi] - values[lo]);
+}
+}  // namespace
+
+double percentile(std::vector<double> values, double p) {
+  if (values.empty()) return std::numeric_limits<double>::quiet_NaN();
+  std::sort(values.begin(), values.end());
+  return sorted_percentile(values, p);
+}
+
+std::vector<double> percentiles(std::vector<double> values, const std::vector<double>& p) {
+  // Selection instead of a sort: the two order statistics around each position (O(n) each).
+  std::vector<double> out(p.size(), std::numeric_limits<double>::quiet_NaN());
+  if (values.empty()) return out;
+  const std::size_t n = values.size();
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    const double pos = std::clamp(p[k], 0.0, 100.0) / 100.0 * static_cast<double>(n - 1);
+    const auto lo = std::min(static_cast<std::size_t>(std::floor(pos)), n - 1);
+    const auto nth = values.begin() + static_cast<std::ptrdiff_t>(lo);
+    std::nth_element(values.begin(), nth, values.end());
+    const double a = *nth;
+    const double b = lo + 1 < n ? *std::min_element(nth + 1, values.end()) : a;
+    out[k] = a + (pos - static_cast<double>(lo)) * (b - a);
+  }
+  return out;
 }
 
 }  // namespace railsim::results

@@ -3,9 +3,9 @@
 // EN 14363 / UIC 518 evaluate Y/Q and the sum of Y as a sliding mean over a
 // 2 m window, sampled every 0.5 m (gensys course summary of UIC 518; see
 // physics-reference.md section 9.3). The mean over a window [c - w/2, c + w/2]
-// is the integral of the linearly interpolated signal divided by w (trapezoid
-// rule on the samples, exact for piecewise-linear signals), so irregular
-// sampling is handled correctly.
+// is the integral of the linearly interpolated signal divided by w (exact for
+// piecewise-linear signals), so irregular sampling is handled correctly. The
+// integrals are differences of one running (prefix) integral: O(1) per window.
 #pragma once
 
 #include <vector>
@@ -30,5 +30,8 @@ WindowedSeries sliding_rms(const std::vector<double>& x, const std::vector<doubl
 // Percentile (0..100) by linear interpolation between order statistics (the
 // "type 7" definition of Hyndman & Fan 1996). Empty input -> NaN.
 double percentile(std::vector<double> values, double p);
+
+// Several percentiles of the same values (one sort), same definition.
+std::vector<double> percentiles(std::vector<double> values, const std::vector<double>& p);
 
 }  // namespace railsim::results

@@ -1,17 +1,44 @@
-// Running safety of a recorded run (run_history.hpp): per wheel the maximum
-// instantaneous Y/Q against Nadal's flange-climbing limit, and per wheelset
-// the EN 14363 evaluation of running_safety.hpp (Y/Q and Sum Y as 2 m sliding
-// means against 0.8 and Prud'homme, wheel unloading), each maximum with the
-// track distance of the wheelset and the time where it occurs.
+// Running safety of a recorded run (run_history.hpp) the EN 14363 way: the
+// on-track assessment quantities per wheel, wheelset, running gear and car
+// body, each with its processing steps, per track section and zone
+// (track_zones.hpp), limit, margin, where and when (safety_quantity.hpp),
+// plus Nadal's instantaneous flange-climbing check and the lateral shifts.
 //
-// Nadal's limit needs the flange angle: flange_angle() takes the largest
-// contact angle of the contact geometry over its lateral range (e.g. ~70 deg
-// for S1002/UIC60 tables); geometries without a flange flank (conical wheels,
-// whose flange is a lateral dead-band spring) fall back to 70 deg, the S1002
-// maximum flank angle (physics-reference §9.1), and say so.
-// Y/Q is signed in the history; the criteria use |Y/Q| (conservative: both
-// flanking directions). A lifted wheel (Q <= 0) has Y/Q = 0 and shows in the
-// unloading criterion. Units: N, m, s, rad.
+// Processing (defaults in safety_settings.hpp with their sources; filters in
+// results/iir_filter.hpp, zero phase):
+//   wheel (Y, Q of every wheel low-passed at 20 Hz):
+//     yq_2m            (Y/Q)_2m: Y/Q of the filtered forces, 2 m sliding mean
+//                      every 0.5 m, max(|F1|, |F2|) per section; limit 0.8
+//                      (R >= 250 m) or 1.2 (R < 250 m)
+//     q_max            Q_max: filtered Q, F2; limit min(90 kN + Q0, speed cap)
+//     wheel_unloading  dQ/Q0 = (Q0 - Q)/Q0 of the filtered Q, F2 (i.e. Q at F1); limit 0.6
+//     y_qst, q_qst, yq_qst  quasi-static values in circular curves: F0 (50 %)
+//                      of the filtered Y, Q, Y/Q; limits 60 kN, 145 kN, none
+//   wheelset:
+//     sum_y_2m         (Sum Y)_2m: filtered Y_left + Y_right, 2 m sliding mean
+//                      every 0.5 m, max(|F1|, |F2|); limit k1 (10 + 2 Q0/3) kN
+//     sum_y_rms        instability, normal method: Sum Y band-passed f0 +- 2 Hz,
+//                      sliding rms over 100 m every 10 m, maximum; limit half
+//                      the track-shift limit
+//   running gear (each bogie frame point above a wheelset):
+//     bogie_ay_rms     instability, simplified method: lateral acceleration
+//                      band-passed f0 +- 2 Hz, sliding rms 100 m every 10 m,
+//                      maximum; limit (12 - m_b/5)/2 m/s^2
+//   car body (above each bogie centre and at the ends):
+//     car_ay, car_az   accelerations band-passed 0.4..10 Hz, max(|F1|, |F2|)
+//     car_ay_rms, car_az_rms  rms of the same per section
+//     car_ay_qst       lateral acceleration low-passed 20 Hz, F0 in curves
+//     (ride characteristics: reported without limits)
+// f0 is the scenario's running_safety.hunting_frequency_hz, else the dominant
+// frequency (results/spectrum.hpp) of the unfiltered Sum Y between 1 and 15 Hz,
+// of the wheelset with the strongest peak.
+// Nadal: the largest instantaneous |Y/Q| (unfiltered) of every wheel against
+// Nadal's limit for the flange angle of the geometry (flange_angle()).
+// Lateral shift of every wheelset: relative to the rails (for flange contact)
+// and absolute (design centre line), labelled.
+// Distances are the track distance of the item (wheelset, or measuring point);
+// times in s. A filter that the sampling cannot carry (cut-off above 0.45 fs)
+// is not applied and the step says so. Units: N, m, s, rad, m/s^2.
 #pragma once
 
 #include <string>
@@ -19,6 +46,9 @@
 
 #include "engine/analysis/run_history.hpp"
 #include "engine/analysis/running_safety.hpp"
+#include "engine/analysis/safety_quantity.hpp"
+#include "engine/analysis/safety_settings.hpp"
+#include "engine/analysis/track_zones.hpp"
 #include "engine/contact_geometry.hpp"
 
 namespace railsim::engine {
@@ -32,45 +62,72 @@ struct FlangeAngle {
 
 // Largest contact angle of `g` over shifts in [-max_shift, max_shift] (all
 // contact points, `samples` shifts); below `min_flank` the geometry is taken to
-// have no flange flank and `fallback` is used.
+// have no flange flank and `fallback` is used (70 deg, the S1002 maximum flank
+// angle, physics-reference §9.1).
 FlangeAngle flange_angle(const ContactGeometry& g, double fallback = 70.0 * 3.14159265358979323846 / 180.0,
                          double min_flank = 45.0 * 3.14159265358979323846 / 180.0, int samples = 801);
 
 // A maximum and where it occurs.
 struct Peak {
   double value = 0.0;
-  double distance = 0.0;  // track distance of the wheelset [m]
+  double distance = 0.0;  // track distance of the item [m]
   double time = 0.0;      // [s]
 };
 
 struct WheelSafety {
-  Peak max_abs_yq;      // instantaneous |Y/Q|
+  Peak max_abs_yq;  // instantaneous |Y/Q|, unfiltered
   bool nadal_pass = true;
-  double yq_2m_time = 0.0;  // time where the (Y/Q)_2m maximum occurs
 };
 
 struct WheelsetSafety {
   std::string name;
-  double static_wheel_load = 0.0;
-  WheelSafety wheel[2];          // left, right
-  AxleSafety en14363;            // running_safety.hpp (distances: wheelset track distance)
-  double sum_y_time = 0.0;       // time of the (Sum Y)_2m maximum
-  double unloading_time = 0.0;   // time of the maximum unloading
-  bool pass = true;              // Nadal on both wheels and EN 14363
+  double static_wheel_load = 0.0;  // Q0 [N]
+  WheelSafety wheel[2];            // left, right
+  Peak max_shift;                  // max |lateral shift| relative to the rails [m]
+  Peak max_shift_absolute;         // max |lateral shift| relative to the design centre line [m]
+  bool pass = true;                // Nadal on both wheels and every limited quantity of the wheelset and its wheels
+};
+
+struct SafetyProcessing {
+  double sample_rate = 0.0;                // [Hz], 0 when the sampling is not uniform
+  std::string force_filter;                // description of the 20 Hz low-pass, or why not applied
+  bool force_filter_applied = false;
+  std::string acceleration_filter;         // 0.4..10 Hz band-pass
+  bool acceleration_filter_applied = false;
+  std::string instability_filter;          // f0 +- 2 Hz band-pass
+  bool instability_filter_applied = false;
+  double hunting_frequency = 0.0;          // f0 [Hz]
+  std::string hunting_frequency_source;
 };
 
 struct RunSafety {
   double flange_angle = 0.0;     // [rad]
   double mu = 0.0;
   double nadal = 0.0;            // (Y/Q) limit
-  SafetyLimits limits;
+  double max_speed = 0.0;        // [m/s]
+  double k1 = 1.0;               // track-shift force factor
+  SafetySettings settings;
+  SafetyProcessing processing;
   bool en14363_evaluated = true; // false when the vehicle does not advance (no distance windows)
+  bool instability_evaluated = true;  // false when the run is shorter than the rms window
   std::vector<std::string> notes;
+  std::vector<TrackSection> sections;
   std::vector<WheelsetSafety> wheelsets;
+  std::vector<Quantity> quantities;
   bool pass = true;
+
+  // The quantity `name` of `item`, or nullptr.
+  const Quantity* find(const std::string& name, const std::string& item) const;
 };
 
-// Throws std::invalid_argument for an empty history.
-RunSafety evaluate_run_safety(const RunHistory& h, double flange_angle, double mu, const SafetyLimits& limits = {});
+// Throws std::invalid_argument for an empty history or no sections.
+RunSafety evaluate_run_safety(const RunHistory& h, const std::vector<TrackSection>& sections, double flange_angle,
+                              double mu, const SafetySettings& settings = {});
+// Same on one straight section (histories without a track).
+RunSafety evaluate_run_safety(const RunHistory& h, double flange_angle, double mu,
+                              const SafetySettings& settings = {});
+
+// Item names used in RunSafety::quantities.
+std::string wheel_item(const std::string& wheelset, int side);  // "ws1 left", "ws1 right"
 
 }  // namespace railsim::engine

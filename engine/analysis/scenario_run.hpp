@@ -1,18 +1,27 @@
 // One run of a scenario with its report: the time simulation
 // (engine/simulation.hpp), the channels (engine::channel_names: time,
-// distance, speed, per wheelset lateral shift and yaw, per wheel Q, Y, Fx,
-// creepages, contact position, Y/Q, wear number T-gamma), and the summary
-// document (summary.json: max lateral shift, integrator statistics, wall time,
-// real-time factor, model choices, validity warnings, `running_safety`: Nadal
-// and EN 14363 evaluation of the run, run_safety.hpp; `curving`: quasi-static
-// curving results per circular curve, curving.hpp). What `railsim run` and the
-// Python module's railsim.run() call.
+// distance, speed, per wheelset lateral shift (absolute) and yaw, per wheel Q,
+// Y, Fx, creepages, contact position, Y/Q, wear number T-gamma; then
+// RunHistory::channel_names: per wheelset the shift relative to the rails
+// <ws>.y_rel, per measuring point <body>.ay@<where> and .az@<where>,
+// run_history.hpp), and the summary document (summary.json: max lateral
+// shift relative to the rails and absolute, integrator statistics, wall time,
+// real-time factor, model choices, the overrides, validity warnings,
+// `running_safety`: the EN 14363 evaluation of the run (run_safety.hpp) with
+// every quantity's processing, limit, margin, where, when and zone, per track
+// zone (track_zones.hpp), and Nadal; `curving`: quasi-static curving results
+// per circular curve, curving.hpp; `post_processing`: the evaluation's own
+// wall and CPU time and its share of the run's). The scenario's
+// `running_safety:` section sets the evaluation (safety_settings.hpp). What
+// `railsim run` and the Python module's railsim.run() call.
 //
 // With an output folder: DIR/channels.csv (streamed row by row as the run
-// goes), DIR/summary.json and DIR/yq.png (Y/Q of the leading wheelset's wheels
-// against distance with the Nadal and (Y/Q)_2m limits). A numerical failure
-// still writes summary.json (status "failed", the message; the running safety
-// up to the failure) and then throws the NumericalError on.
+// goes), DIR/summary.json, DIR/yq.png ((Y/Q)_2m of both wheels of the worst
+// wheelset, the envelope of all wheelsets, the limits; curves, transitions and
+// defects shaded) and DIR/sum_y_rms.png (the instability rms of every
+// wheelset with its limit). A numerical failure still writes summary.json
+// (status "failed", the message; the running safety up to the failure, with
+// the verdict FAIL) and then throws the NumericalError on.
 #pragma once
 
 #include <cstddef>
@@ -28,6 +37,7 @@ namespace railsim::engine {
 struct ScenarioRunOptions {
   std::string out_dir;         // empty: no files
   bool keep_channels = false;  // keep every channel row in memory (ScenarioRunResult::channels)
+  std::vector<std::string> overrides;  // how the scenario was varied (e.g. "--set contact.material.mu=0.2"), recorded
 };
 
 struct ScenarioRunResult {
@@ -38,6 +48,8 @@ struct ScenarioRunResult {
   RunSummary run;
 };
 
+// Throws InputError for a bad running_safety section (before running) or an
+// output folder that cannot be made, NumericalError when the run fails.
 ScenarioRunResult run_scenario(const Scenario& scenario, const ScenarioRunOptions& options);
 
 }  // namespace railsim::engine

@@ -32,7 +32,9 @@ def test_run_matches_the_program(cli, tmp_path):
         s = json.load(f)
     assert list(s.keys()) == list(r.summary.keys())
     assert s["max_lateral_shift"] == pytest.approx(r.summary["max_lateral_shift"], rel=1e-12)
-    assert r.summary["max_lateral_shift"] == pytest.approx(np.max(np.abs(ch["ws1.y"])), rel=1e-9)
+    # Relative to the rails (ws1.y_rel); the absolute shift (ws1.y) is labelled as such.
+    assert r.summary["max_lateral_shift"] == pytest.approx(np.max(np.abs(ch["ws1.y_rel"])), rel=1e-9)
+    assert r.summary["max_lateral_shift_absolute"] == pytest.approx(np.max(np.abs(ch["ws1.y"])), rel=1e-9)
     assert s["integrator_statistics"] == r.summary["integrator_statistics"]
 
 

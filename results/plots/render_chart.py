@@ -1,5 +1,7 @@
 #!/usr/bin/env python3
-"""Render a railsim chart description (JSON written by results/chart.cpp) to PNG.
+"""Render railsim chart descriptions (JSON written by results/chart.cpp) to PNG.
+
+Usage: render_chart.py SPEC.json [SPEC.json ...] (several charts, one process).
 
 A single plot, or with a non-empty "panels" list a grid of sub-plots with
 shared axes (small multiples): each series and annotation names its panel.
@@ -14,14 +16,24 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 
+def numbers(values):
+    return [float("nan") if v is None else v for v in values]
+
+
 def plot_series(ax, s):
     kw = {"label": s["label"] or None}
     if s.get("color"):
         kw["color"] = s["color"]
-    x = [float("nan") if v is None else v for v in s["x"]]
-    y = [float("nan") if v is None else v for v in s["y"]]
+    x = numbers(s["x"])
+    y = numbers(s["y"])
     style = s.get("style", "line")
-    if style == "markers":
+    if style == "dashed":
+        ax.plot(x, y, "--", linewidth=1.5, **kw)
+    elif style == "dotted":
+        ax.plot(x, y, ":", linewidth=1.5, **kw)
+    elif style == "faint":
+        ax.plot(x, y, "-", linewidth=0.6, alpha=0.3, **kw)
+    elif style == "markers":
         ax.plot(x, y, "o", **kw)
     elif style == "crosses":
         ax.plot(x, y, "x", markersize=6, **kw)
@@ -33,7 +45,31 @@ def plot_series(ax, s):
         ax.plot(x, y, "-", **kw)
 
 
+def shade(ax, spec):
+    """Shaded x ranges (curves, transitions, defects); one legend entry per label."""
+    seen = set()
+    for sp in spec.get("spans", []):
+        label = sp.get("label") or None
+        if label in seen:
+            label = None
+        else:
+            seen.add(label)
+        kw = {"color": sp.get("color") or "0.8", "alpha": sp.get("alpha", 0.2), "label": label, "linewidth": 0,
+              "zorder": 0}
+        if sp.get("hatch"):
+            kw["hatch"] = sp["hatch"]
+            kw["fill"] = False
+            kw["edgecolor"] = kw.pop("color")
+        ax.axvspan(sp["x0"], sp["x1"], **kw)
+
+
+def plot_band(ax, b):
+    ax.fill_between(numbers(b["x"]), numbers(b["y_low"]), numbers(b["y_high"]), color=b.get("color") or "0.6",
+                    alpha=b.get("alpha", 0.35), linewidth=0, label=b.get("label") or None)
+
+
 def decorate(ax, spec):
+    shade(ax, spec)
     for line in spec.get("lines", []):
         kw = {"color": line.get("color") or "k", "linestyle": "--", "linewidth": 1,
               "label": line.get("label") or None}
@@ -68,7 +104,10 @@ def annotate(fig, ax, annotations):
 
 
 def single(spec):
-    fig, ax = plt.subplots(figsize=(8, 5), dpi=110)
+    outside = spec.get("legend") == "outside"
+    fig, ax = plt.subplots(figsize=(11, 5) if outside else (8, 5), dpi=110)
+    for b in spec.get("bands", []):
+        plot_band(ax, b)
     for s in spec["series"]:
         plot_series(ax, s)
     decorate(ax, spec)
@@ -76,8 +115,13 @@ def single(spec):
     ax.set_title(spec.get("title", ""))
     ax.set_xlabel(spec.get("xlabel", ""))
     ax.set_ylabel(spec.get("ylabel", ""))
-    if any(s["label"] for s in spec["series"]) or any(l.get("label") for l in spec.get("lines", [])):
-        ax.legend(fontsize=8)
+    if (any(s["label"] for s in spec["series"]) or any(l.get("label") for l in spec.get("lines", []))
+            or any(sp.get("label") for sp in spec.get("spans", []))
+            or any(b.get("label") for b in spec.get("bands", []))):
+        if outside:
+            ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
+        else:
+            ax.legend(fontsize=8)
     return fig
 
 
@@ -95,6 +139,10 @@ def multiples(spec):
             continue
         ax.set_title(titles[i], fontsize=9)
         decorate(ax, spec)
+    for b in spec.get("bands", []):
+        p = b.get("panel", 0)
+        if 0 <= p < n:
+            plot_band(flat[p], b)
     for s in spec["series"]:
         p = s.get("panel", 0)
         if 0 <= p < n:
@@ -120,7 +168,7 @@ def multiples(spec):
     return fig
 
 
-def main(path):
+def render(path):
     with open(path) as f:
         spec = json.load(f)
     if spec.get("panels"):
@@ -129,8 +177,20 @@ def main(path):
         fig = single(spec)
         fig.tight_layout()
     fig.savefig(spec["output"])
-    return 0
+    plt.close(fig)
+
+
+def main(paths):
+    """Render every chart description given (one process for several charts)."""
+    failed = 0
+    for path in paths:
+        try:
+            render(path)
+        except Exception as e:  # one bad chart must not cost the others
+            print(f"render_chart.py: {path}: {e}", file=sys.stderr)
+            failed += 1
+    return 1 if failed else 0
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv[1]))
+    sys.exit(main(sys.argv[1:]))

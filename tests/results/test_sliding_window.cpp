@@ -60,3 +60,17 @@ TEST_CASE("percentile by linear interpolation of order statistics", "[results]")
 TEST_CASE("sliding window rejects unsorted abscissae", "[results]") {
   CHECK_THROWS_AS(sliding_mean({0.0, 2.0, 1.0}, {0.0, 0.0, 0.0}, 1.0, 0.5), std::invalid_argument);
 }
+
+TEST_CASE("several percentiles at once equal the single ones (0.15 %, 50 %, 99.85 %)", "[results]") {
+  // 11 values 0..10: position (n - 1) p / 100 = 10 p / 100, linear between order statistics.
+  std::vector<double> v;
+  for (int i = 10; i >= 0; --i) v.push_back(i);
+  const auto p = percentiles(v, {0.15, 50.0, 99.85, 100.0});
+  REQUIRE(p.size() == 4);
+  CHECK(p[0] == Approx(0.015));
+  CHECK(p[1] == Approx(5.0));
+  CHECK(p[2] == Approx(9.985));
+  CHECK(p[3] == Approx(10.0));
+  for (double q : {0.15, 50.0, 99.85}) CHECK(percentiles(v, {q})[0] == Approx(percentile(v, q)));
+  CHECK(std::isnan(percentiles({}, {50.0})[0]));
+}
