@@ -25,6 +25,7 @@ struct WheelOutput {
   double contact_y = 0.0;       // lateral position of the contact point on the rail, track y [m]
   double contact_angle = 0.0;   // [rad]
   double rolling_radius = 0.0;  // [m]
+  double contact_lead = 0.0;    // [m] of the most loaded point, ahead of the axle
   bool valid = true;
   const char* reason = "";
 };

@@ -4,6 +4,7 @@
 #include <spdlog/spdlog.h>
 
 #include <cmath>
+#include <algorithm>
 #include <cstdio>
 
 #include "contact/geometry/profile.hpp"
@@ -36,16 +37,12 @@ ProfileGeometry::ProfileGeometry(const ProfileGeometryParams& params, const cont
     : table_(make_table(params)), material_(material) {
   // The symmetric use needs the table on both sides of zero.
   s_max_ = std::min(-params.grid.y_min, params.grid.y_max);
-  // Reference vertical approach: the centred wheel's at N0.
   {
     contact::TableSample t;
     table_.lookup(0.0, t);
-    const contact::ContactPoint& p = t.wheel[static_cast<int>(contact::Side::left)].p[0];
-    const contact::HertzPatch h = contact::hertz_from_load(p.A, p.B, kReferenceLoad, material_);
-    w0_ = h.approach / std::cos(p.angle);
+    z0_ = t.z;
   }
-  WheelContact c;
-  evaluate(0.0, c);
+  const ContactPointGeometry c = main_point(0.0);
   r0_ = c.rolling_radius;
   l0_ = c.lateral;
   char buf[256];
@@ -58,15 +55,14 @@ ProfileGeometry::ProfileGeometry(const ProfileGeometryParams& params, const cont
 namespace {
 
 // One tabulated point as the engine sees it, with its Hertz patch and
-// approach at the reference load, and the offset `gap` that puts its normal
-// approach at the reference state (engine z = 0) at (w0 - v) cos(delta), v its
-// vertical gap in the rigid touching position (see the header).
-void fill(const contact::ContactPoint& p, double s, double w0, const contact::Material& material,
-          WheelContact& out) {
-  out = WheelContact{};
+// approach at the reference load; gap = q0 + (normal gap at the rigid pose),
+// so that the load law gives K (dq - gap_n)^{3/2} (contact_geometry.hpp).
+void fill(const contact::ContactPoint& p, double s, const contact::Material& material, ContactPointGeometry& out) {
+  out = ContactPointGeometry{};
   out.rolling_radius = p.radius;
   out.contact_angle = p.angle;
   out.lateral = p.y - s;
+  out.lead = p.x;
   out.A = p.A;
   out.B = p.B;
   const contact::HertzPatch h = contact::hertz_from_load(p.A, p.B, ProfileGeometry::kReferenceLoad, material);
@@ -74,33 +70,33 @@ void fill(const contact::ContactPoint& p, double s, double w0, const contact::Ma
   out.semi_b = h.b;
   out.N0 = ProfileGeometry::kReferenceLoad;
   out.q0 = h.approach;
-  const double cd = std::cos(p.angle);
-  out.gap = out.q0 - (w0 - p.gap / cd) * cd;  // table gaps are normal gaps: vertical = gap / cos(delta)
+  out.gap = out.q0 + p.gap;
 }
 
 }  // namespace
 
-void ProfileGeometry::evaluate(double s, WheelContact& out) const {
-  contact::TableSample t;
-  table_.lookup(s, t);
-  fill(t.wheel[static_cast<int>(contact::Side::left)].p[0], s, w0_, material_, out);
-}
-
-double ProfileGeometry::rigid_roll(double y) const {
-  contact::TableSample t;
-  table_.lookup(y, t);
-  return t.roll;  // the table's roll: positive lifts the left (+y) side
-}
-
-void ProfileGeometry::evaluate_point(double s, int k, WheelContact& out) const {
+void ProfileGeometry::evaluate(double s, double yaw, WheelGeometry& out) const {
+  (void)yaw;
   contact::TableSample t;
   table_.lookup(s, t);
   const contact::WheelContact& w = t.wheel[static_cast<int>(contact::Side::left)];
-  if (k >= w.n) {
-    out = WheelContact{};  // N0 = 0: no such point at this shift
-    return;
-  }
-  fill(w.p[static_cast<std::size_t>(k)], s, w0_, material_, out);
+  out.n = std::min(w.n, WheelGeometry::kMaxPoints);
+  for (int k = 0; k < out.n; ++k) fill(w.p[static_cast<std::size_t>(k)], s, material_, out.p[k]);
+}
+
+bool ProfileGeometry::rigid_pose(double y, double yaw, RigidPose& out) const {
+  (void)yaw;
+  contact::TableSample t, a, b;
+  const double h = 1e-6;
+  const double y0 = std::clamp(y, -s_max_ + h, s_max_ - h);
+  table_.lookup(y0, t);
+  table_.lookup(y0 - h, a);
+  table_.lookup(y0 + h, b);
+  out.roll = t.roll;  // the table's roll: positive lifts the left (+y) side
+  out.droll_dy = (b.roll - a.roll) / (2 * h);
+  out.height = t.z - z0_;
+  out.dheight_dy = (b.z - a.z) / (2 * h);
+  return true;
 }
 
 }  // namespace railsim::engine

@@ -55,10 +55,8 @@ class ProfileGeometry final : public ContactGeometry {
   // Builds (or loads from the cache) the contact table. InputError for bad
   // profiles or set-up.
   ProfileGeometry(const ProfileGeometryParams& params, const contact::Material& material);
-  void evaluate(double s, WheelContact& out) const override;
-  int points() const override { return 2; }
-  double rigid_roll(double y) const override;
-  void evaluate_point(double s, int k, WheelContact& out) const override;
+  void evaluate(double s, double yaw, WheelGeometry& out) const override;
+  bool rigid_pose(double y, double yaw, RigidPose& out) const override;
   double r0() const override { return r0_; }
   double l0() const override { return l0_; }
   double max_shift() const override { return s_max_; }
@@ -68,7 +66,7 @@ class ProfileGeometry final : public ContactGeometry {
   contact::ContactTable table_;
   contact::Material material_;
   double r0_ = 0.0, l0_ = 0.0, s_max_ = 0.0;
-  double w0_ = 0.0;  // reference vertical approach [m]
+  double z0_ = 0.0;  // axle height of the centred wheelset in the table [m]
   std::string description_;
 };
 

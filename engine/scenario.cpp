@@ -64,8 +64,11 @@ std::shared_ptr<const ContactGeometry> load_geometry(const InputNode& g, const s
     return std::make_shared<ConicalGeometry>(p);
   }
   if (type == "table") {
-    g.allow_only({"type", "file"});
-    return std::make_shared<GeometryTable>(existing_file(g.at("file"), base));
+    g.allow_only({"type", "file", "node_step", "smoothing"});
+    GeometryTableOptions o;
+    if (g.has("node_step")) o.node_step = g.in_range("node_step", 1e-6, 2e-3);
+    if (g.has("smoothing")) o.smoothing = g.in_range("smoothing", 0.0, 2e-3);
+    return std::make_shared<GeometryTable>(existing_file(g.at("file"), base), o);
   }
   if (type == "profiles") {
     g.allow_only({"type", "wheel", "rail", "inclination", "gauge", "gauge_depth", "flange_back", "back_face", "r0",
@@ -181,7 +184,7 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
   // Contact.
   const InputNode c = root.at("contact");
   c.allow_only({"geometry", "tangential", "saturation", "material", "reduction", "creep_coefficients", "patch",
-                "spin", "static_approach"});
+                "spin", "static_approach", "normal_damping"});
   CouplingOptions co;
   if (auto mat = c.find("material")) {
     mat->allow_only({"E", "nu", "mu", "shear_modulus"});
@@ -214,10 +217,10 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
     co.N_ref = p->positive("N_ref");
   }
   if (auto sp = c.find("spin")) co.spin = sp->as_bool();
+  if (c.has("normal_damping")) co.normal_damping = c.in_range("normal_damping", 0.0, 1e8);
   // Tabulated geometries (table file, profiles) carry their own patch at N0.
   const bool table = c.at("geometry").string("type") != "conical";
-  WheelContact c0;
-  geo->evaluate(0.0, c0);
+  const ContactPointGeometry c0 = geo->main_point(0.0);
   const bool hertz = !table && c0.A > 0 && c0.B > 0;
   if (!table && co.patch_a <= 0 && !hertz && !(co.tangential == "coefficients" && co.f11 > 0))
     c.fail("conical wheels need 'creep_coefficients' (f11, f22, ...; tangential 'coefficients' only), 'patch' "
@@ -229,7 +232,7 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
   // Integrator.
   if (auto in = root.find("integrator")) {
     in->allow_only({"method", "rtol", "atol", "max_step", "initial_step", "min_step", "max_steps", "jacobian",
-                    "linear_solver", "max_order"});
+                    "linear_solver", "max_order", "stability_limit_detection", "atol_contact_modes"});
     auto& o = sc.integrator;
     o.method = in->string_or("method", o.method);
     if (in->has("rtol")) o.rtol = in->in_range("rtol", 0.0, 0.1, true);
@@ -239,14 +242,18 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
     if (in->has("min_step")) o.min_step = in->non_negative("min_step");
     if (in->has("max_steps")) o.max_steps = static_cast<long>(in->in_range("max_steps", 1, 1e9));
     if (in->has("max_order")) o.max_order = static_cast<int>(in->in_range("max_order", 1, 5));
+    if (in->has("atol_contact_modes")) o.atol_contact_modes = in->in_range("atol_contact_modes", 0.0, 1.0);
+    if (auto sl = in->find("stability_limit_detection")) o.stability_limit_detection = sl->as_bool();
     o.jacobian = in->string_or("jacobian", o.jacobian);
     o.linear_solver = in->string_or("linear_solver", o.linear_solver);
     bool known = false;
     for (const auto& e : integrators()) known |= o.method == e.name;
     if (!known) in->at("method").fail("unknown integrator '" + o.method + "' (known: " + integrator_names() + ")");
     if (o.jacobian != "fd" && o.jacobian != "assembled") in->at("jacobian").fail("expected 'fd' or 'assembled'");
-    if (o.linear_solver != "dense" && o.linear_solver != "band")
-      in->at("linear_solver").fail("expected 'dense' or 'band'");
+    if (o.linear_solver != "auto" && o.linear_solver != "dense" && o.linear_solver != "band" && o.linear_solver != "klu")
+      in->at("linear_solver").fail("expected 'auto', 'klu', 'dense' or 'band'");
+    if (o.linear_solver == "klu" && o.jacobian == "fd")
+      in->at("jacobian").fail("'fd' works with the dense and band solvers only; 'klu' needs 'assembled'");
   }
 
   finalize_model(m);

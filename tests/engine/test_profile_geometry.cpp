@@ -67,8 +67,7 @@ TEST_CASE("profile geometry: the right wheel at -y mirrors the left wheel at +y"
     contact::TableSample t;
     table.lookup(y, t);
     const auto& right = t.wheel[static_cast<int>(contact::Side::right)].p[0];
-    WheelContact c;
-    g.evaluate(-y, c);  // shift toward the right wheel is -y
+    const ContactPointGeometry c = g.main_point(-y);  // shift toward the right wheel is -y
     INFO("y = " << y * 1e3 << " mm");
     // Mirror symmetry of profiles and set-up (radius to 1 um, angle to 1e-4 rad:
     // the table is interpolated at mirrored points of its grid).
@@ -86,9 +85,7 @@ TEST_CASE("profile geometry: flange jump and Hertz patch", "[engine][geometry]")
   // CONTACT's sweep (S1002/UIC60 1:40, see tests/contact_geometry): the
   // touching point jumps from the flange root (contact angle below 30 deg) to
   // the flank (about 65-70 deg) between 6.0 and 6.5 mm.
-  WheelContact tread, flange;
-  g.evaluate(0.0060, tread);
-  g.evaluate(0.0066, flange);
+  const ContactPointGeometry tread = g.main_point(0.0060), flange = g.main_point(0.0066);
   CHECK(tread.contact_angle < 0.52);
   CHECK(flange.contact_angle > 1.0);
   CHECK(flange.rolling_radius > tread.rolling_radius + 5e-3);
@@ -144,7 +141,6 @@ TEST_CASE("profile geometry: two-point contact shares the load across the tread 
   const std::string dir = test::temp_dir("profile_geometry_two_point");
   const Scenario sc = profiles_wheelset(dir, "wheelset_model: full\n", false);
   const auto& geo = *sc.model.wheelsets[0].geometry;
-  REQUIRE(geo.points() == 2);
   const int lat = state_index(sc, "ws1.lateral"), vert = state_index(sc, "ws1.vertical");
   REQUIRE(lat >= 0);
   REQUIRE(vert >= 0);
@@ -182,8 +178,7 @@ TEST_CASE("profile geometry: two-point contact shares the load across the tread 
     const double s = 3.9e-3 + i * 5e-6;  // 3.9 .. 5.5 mm in 5 um steps
     const WheelOutput w = loaded(s);
     REQUIRE(w.Q == Approx(W).epsilon(1e-6));
-    WheelContact p0;
-    geo.evaluate_point(s, 0, p0);
+    const ContactPointGeometry p0 = geo.main_point(s);
     const double y_one = -W * std::tan(p0.contact_angle);
     // Both points loaded: the lateral force differs from the main point's alone.
     if (std::abs(w.Y - y_one) > 0.01 * W) ++shared;
@@ -228,8 +223,7 @@ TEST_CASE("profile geometry: the lateral model shares the load between two point
     rhs_or_throw(sc.model, d, 0.0, x.data(), xd.data());
     const WheelOutput& w = d.wheel[0];
     REQUIRE(w.Q > 0.0);
-    WheelContact p0;
-    geo.evaluate_point(s, 0, p0);
+    const ContactPointGeometry p0 = geo.main_point(s);
     const double two = w.Y / w.Q;
     REQUIRE(d.motion[static_cast<std::size_t>(body)].q[kRoll] == 0.0);
     const double one = -std::tan(p0.contact_angle);
@@ -250,7 +244,7 @@ TEST_CASE("profile geometry: the lateral model shares the load between two point
 }
 
 // The lateral model's kinematic roll with real profiles is the rigid
-// wheelset's roll (ContactGeometry::rigid_roll), checked against the
+// wheelset's roll (ContactGeometry::rigid_pose), checked against the
 // Manchester benchmark's equilibrium roll that CONTACT was run with
 // (tests/data/reference/contact/mbench_S1002_UIC60_sweep.csv, series yaw0,
 // y_ws = 0 .. 10 mm; CONTACT's roll is negative for a shift toward its
