@@ -32,6 +32,8 @@
 #include <limits>
 #include <string>
 
+#include "contact/geometry/strip_contact_table.hpp"
+
 namespace railsim::engine {
 
 struct ContactPointGeometry {
@@ -85,6 +87,20 @@ class ContactGeometry {
     out = RigidPose{};
     return false;
   }
+  // Distributed contact (profiles): the strips of one wheel at shift s toward
+  // it and yaw as seen by it whose gap is below `cutoff` (and their
+  // neighbours), for engine/strip_patches.hpp; false for point geometries
+  // (tables, cones), whose points carry Hertz laws.
+  virtual bool strips(double s, double yaw, double cutoff, contact::StripSet& out) const {
+    (void)s;
+    (void)yaw;
+    (void)cutoff;
+    out.n = 0;
+    return false;
+  }
+  virtual bool distributed() const { return false; }
+  // Contact modulus E* = E / (2 (1 - nu^2)) of the strips [Pa] (distributed only).
+  virtual double contact_modulus() const { return 0.0; }
   // True when the geometry's reference state (N = N0 at dq = 0) already
   // follows the shift (RSGEO tables, DYTSI's convention): the full model then
   // measures its approaches from z = phi = 0 instead of from the rigid pose.

@@ -3,31 +3,28 @@
 
 #include <spdlog/spdlog.h>
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "contact/geometry/profile.hpp"
 #include "contact/hertz.hpp"
+#include "engine/strip_patches.hpp"
 
 namespace railsim::engine {
 
 namespace {
 
-contact::ContactTable make_table(const ProfileGeometryParams& p) {
+contact::StripContactTable make_table(const ProfileGeometryParams& p) {
   const contact::Profile wheel = contact::read_profile(p.wheel, contact::ProfileKind::wheel);
   const contact::Profile rail = contact::read_profile(p.rail, contact::ProfileKind::rail);
   p.setup.validate();
   p.grid.validate();
-  // Second points up to 1 mm of vertical gap: they close under the loads of
-  // flange contact (the Hertz approach is ~0.1 mm at 100 kN).
-  contact::SearchOptions search;
-  search.second_gap_max = 1.0e-3;
-  const contact::WheelRailGeometry geometry(wheel, rail, p.setup, search);
+  const contact::WheelRailGeometry geometry(wheel, rail, p.setup);
   bool cached = false;
-  auto table = contact::ContactTable::cached(geometry, wheel, rail, p.grid, p.cache_dir, &cached);
-  spdlog::debug("profile geometry {} on {}: contact table {} ({} rows)", p.wheel, p.rail,
-                cached ? "from the cache" : "computed", table.rows());
+  auto table = contact::StripContactTable::cached(geometry, wheel, rail, p.grid, p.cache_dir, &cached);
+  spdlog::debug("profile geometry {} on {}: strip table {} ({} strips, {} stored entries)", p.wheel, p.rail,
+                cached ? "from the cache" : "computed", table.strip_count(), table.stored_entries());
   return table;
 }
 
@@ -35,68 +32,58 @@ contact::ContactTable make_table(const ProfileGeometryParams& p) {
 
 ProfileGeometry::ProfileGeometry(const ProfileGeometryParams& params, const contact::Material& material)
     : table_(make_table(params)), material_(material) {
+  Es_ = material_.E / (2.0 * (1.0 - material_.nu * material_.nu));
   // The symmetric use needs the table on both sides of zero.
-  s_max_ = std::min(-params.grid.y_min, params.grid.y_max);
-  {
-    contact::TableSample t;
-    table_.lookup(0.0, t);
-    z0_ = t.z;
-  }
+  s_max_ = std::min(-table_.y_min(), table_.y_max());
   const ContactPointGeometry c = main_point(0.0);
   r0_ = c.rolling_radius;
   l0_ = c.lateral;
-  char buf[256];
-  std::snprintf(buf, sizeof buf, "profiles %s on %s, inclination %.5f rad, gauge %.4f m, |y| <= %.1f mm",
+  char buf[320];
+  std::snprintf(buf, sizeof buf,
+                "profiles %s on %s, inclination %.5f rad, gauge %.4f m, |y| <= %.1f mm, |yaw| <= %.0f mrad, "
+                "strips %.2g mm",
                 params.wheel.c_str(), params.rail.c_str(), params.setup.inclination, params.setup.gauge,
-                s_max_ * 1e3);
+                s_max_ * 1e3, table_.yaw_max() * 1e3, params.grid.strip * 1e3);
   description_ = buf;
 }
 
-namespace {
-
-// One tabulated point as the engine sees it, with its Hertz patch and
-// approach at the reference load; gap = q0 + (normal gap at the rigid pose),
-// so that the load law gives K (dq - gap_n)^{3/2} (contact_geometry.hpp).
-void fill(const contact::ContactPoint& p, double s, const contact::Material& material, ContactPointGeometry& out) {
-  out = ContactPointGeometry{};
-  out.rolling_radius = p.radius;
-  out.contact_angle = p.angle;
-  out.lateral = p.y - s;
-  out.lead = p.x;
-  out.A = p.A;
-  out.B = p.B;
-  const contact::HertzPatch h = contact::hertz_from_load(p.A, p.B, ProfileGeometry::kReferenceLoad, material);
-  out.semi_a = h.a;
-  out.semi_b = h.b;
-  out.N0 = ProfileGeometry::kReferenceLoad;
-  out.q0 = h.approach;
-  out.gap = out.q0 + p.gap;
-}
-
-}  // namespace
-
-void ProfileGeometry::evaluate(double s, double yaw, WheelGeometry& out) const {
-  (void)yaw;
-  contact::TableSample t;
-  table_.lookup(s, t);
-  const contact::WheelContact& w = t.wheel[static_cast<int>(contact::Side::left)];
-  out.n = std::min(w.n, WheelGeometry::kMaxPoints);
-  for (int k = 0; k < out.n; ++k) fill(w.p[static_cast<std::size_t>(k)], s, material_, out.p[k]);
+bool ProfileGeometry::strips(double s, double yaw, double cutoff, contact::StripSet& out) const {
+  table_.strips(s, yaw, cutoff, out);
+  return true;
 }
 
 bool ProfileGeometry::rigid_pose(double y, double yaw, RigidPose& out) const {
-  (void)yaw;
-  contact::TableSample t, a, b;
-  const double h = 1e-6;
-  const double y0 = std::clamp(y, -s_max_ + h, s_max_ - h);
-  table_.lookup(y0, t);
-  table_.lookup(y0 - h, a);
-  table_.lookup(y0 + h, b);
-  out.roll = t.roll;  // the table's roll: positive lifts the left (+y) side
-  out.droll_dy = (b.roll - a.roll) / (2 * h);
-  out.height = t.z - z0_;
-  out.dheight_dy = (b.z - a.z) / (2 * h);
+  contact::StripPose p;
+  table_.pose(y, yaw, p);
+  out.roll = p.roll;  // positive lifts the left (+y) side
+  out.droll_dy = p.droll_dy;
+  out.height = p.height;
+  out.dheight_dy = p.dheight_dy;
   return true;
+}
+
+void ProfileGeometry::evaluate(double s, double yaw, WheelGeometry& out) const {
+  contact::StripSet set;
+  table_.strips(s, yaw, kGapCutoff, set);
+  contact::StripPose pose;
+  table_.pose(s, yaw, pose);
+  StripLoads loads;
+  strip_approach_for_load(set, kReferenceLoad, pose.roll, Es_, loads);
+  out.n = loads.n;
+  for (int k = 0; k < loads.n; ++k) {
+    ContactPointGeometry& c = out.p[k];
+    c = loads.patch[k];
+    const double N = loads.N[k];
+    if (c.A > 0 && c.B > 0 && N > 0) {
+      const contact::HertzPatch h = contact::hertz_from_load(c.A, c.B, N, material_);
+      c.semi_a = h.a;
+      c.semi_b = h.b;
+      c.N0 = N;
+      c.q0 = h.approach;
+    }
+  }
+  // Most loaded first.
+  std::sort(out.p, out.p + out.n, [](const ContactPointGeometry& a, const ContactPointGeometry& b) { return a.N0 > b.N0; });
 }
 
 }  // namespace railsim::engine

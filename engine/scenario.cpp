@@ -72,7 +72,7 @@ std::shared_ptr<const ContactGeometry> load_geometry(const InputNode& g, const s
   }
   if (type == "profiles") {
     g.allow_only({"type", "wheel", "rail", "inclination", "gauge", "gauge_depth", "flange_back", "back_face", "r0",
-                  "max_shift", "step", "cache_dir"});
+                  "max_shift", "step", "max_yaw", "yaw_step", "strip", "cache_dir"});
     ProfileGeometryParams p;
     auto profile = [&](const char* key, const std::string& fallback) {
       if (!g.has(key)) return fallback;
@@ -101,7 +101,12 @@ std::shared_ptr<const ContactGeometry> load_geometry(const InputNode& g, const s
     if (g.has("back_face")) p.setup.back_face = g.in_range("back_face", -0.2, 0.0);
     if (g.has("r0")) p.setup.r0 = g.in_range("r0", 0.1, 1.5);
     const double s_max = g.has("max_shift") ? g.in_range("max_shift", 0.002, 0.02) : 0.015;
-    p.grid = {-s_max, s_max, g.has("step") ? g.in_range("step", 1e-6, 1e-3) : 1e-4};
+    p.grid.y_min = -s_max;
+    p.grid.y_max = s_max;
+    if (g.has("step")) p.grid.y_step = g.in_range("step", 1e-5, 1e-3);
+    if (g.has("max_yaw")) p.grid.yaw_max = g.in_range("max_yaw", 0.0, 0.1);
+    if (g.has("yaw_step")) p.grid.yaw_step = g.in_range("yaw_step", 1e-4, 0.05);
+    if (g.has("strip")) p.grid.strip = g.in_range("strip", 1e-4, 5e-3);
     if (g.has("cache_dir")) p.cache_dir = resolve(base, g.string("cache_dir"));
     return std::make_shared<ProfileGeometry>(p, material);
   }

@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "core/errors.hpp"
+#include "engine/strip_patches.hpp"
 #include "engine/wheelset_contact.hpp"
 
 namespace railsim::engine {
@@ -145,6 +146,13 @@ void finalize_model(Model& model) {
     // Vertical approach that carries the static load (full model), from the
     // geometry's own load law at the centred position.
     for (int i = 0; i < 2; ++i) {
+      if (w.geometry->distributed()) {
+        contact::StripSet s;
+        w.geometry->strips(0.0, 0.0, 1.5e-3, s);
+        StripLoads L;
+        w.static_approach[i] = strip_approach_for_load(s, Q[i], 0.0, w.geometry->contact_modulus(), L);
+        continue;
+      }
       WheelGeometry g;
       w.geometry->evaluate(0.0, 0.0, g);
       double N[WheelGeometry::kMaxPoints];

@@ -5,7 +5,9 @@
 #include <cmath>
 #include <cstdio>
 
+#include "contact/hertz.hpp"
 #include "engine/creepages.hpp"
+#include "engine/strip_patches.hpp"
 
 namespace railsim::engine {
 
@@ -44,6 +46,104 @@ inline void complete_point(ContactPointGeometry& c, double N0, double q0) {
     c.N0 = N0;
     c.q0 = q0;
   }
+}
+
+// Strip gaps beyond this never carry load (approaches stay below ~0.3 mm) [m].
+constexpr double kStripGapCutoff = 1.5e-3;
+
+// Patches of a distributed-contact wheel as points with their loads: the
+// equivalent Hertz ellipse at the patch's own load (N0 = N).
+void patches_to_points(const StripLoads& L, const contact::Material& m, WheelGeometry& g, double* N) {
+  g.n = L.n;
+  for (int p = 0; p < L.n; ++p) {
+    g.p[p] = L.patch[p];
+    N[p] = L.N[p];
+    ContactPointGeometry& c = g.p[p];
+    if (c.semi_a > 0 && c.semi_b > 0 && N[p] > 0) {  // curvature B that gives this ellipse under N (Hertz)
+      const contact::HertzPatch h = contact::hertz_from_semi_axes(c.semi_a, c.semi_b, N[p], m);
+      c.A = h.A;
+      c.B = h.B;
+    }
+    c.N0 = N[p];
+  }
+}
+
+// Normal loads from strips: full model, from the wheel's approach; lateral
+// model, the approach that carries the quasi-static load.
+bool distributed_loads(const Model& model, Data& d, int w, const WheelsetKinematics& k, const contact::StripSet* strips,
+                       WheelGeometry* g, double (*N)[WheelGeometry::kMaxPoints], double* Qlat) {
+  const Wheelset& ws = model.wheelsets[w];
+  const ContactGeometry& geo = *ws.geometry;
+  const BodyMotion& m = d.motion[ws.body];
+  const TrackSample& T = d.track[ws.body];
+  const double Es = geo.contact_modulus();
+  const contact::Material& mat = model.coupling.options().material;
+  RigidPose ref;
+  geo.rigid_pose(k.y, k.psi, ref);
+  StripLoads L;
+  if (model.wheelset_model == WheelsetModel::full) {
+    const double cn = model.coupling.options().normal_damping;
+    for (int i = 0; i < 2; ++i) {
+      const int side = i == 0 ? 1 : -1;
+      const double zr = i == 0 ? T.vert_left : T.vert_right;
+      const double dzr = i == 0 ? T.dvert_left : T.dvert_right;
+      const double wi = ws.static_approach[i] - (m.q[kVert] - zr - ref.height);
+      strip_loads(strips[i], wi, side * (k.phi - ref.roll), side * k.phi, Es, L);
+      patches_to_points(L, mat, g[i], N[i]);
+      if (cn > 0.0) {
+        const double rate0 = m.v[kVert] - d.V * dzr - ref.dheight_dy * k.ydot;
+        double Ntot = 0.0;
+        for (int p = 0; p < g[i].n; ++p) Ntot += N[i][p];
+        for (int p = 0; p < g[i].n; ++p) {
+          const ContactPointGeometry& c = g[i].p[p];
+          const double rate = rate0 + side * c.lateral * (k.phidot - ref.droll_dy * k.ydot);
+          N[i][p] = std::max(0.0, N[i][p] - cn * (N[i][p] / Ntot) * rate * std::cos(c.contact_angle));
+        }
+      }
+    }
+    return true;
+  }
+  // Lateral model: lever arms of the vertical equilibrium from each wheel's
+  // strips near the touching point, weighted (1 - gap/0.2 mm)^2 (continuous in
+  // the shift, unlike the touching strip alone; the load's own centre would
+  // need the loads first).
+  const GenForce& F = d.force[ws.body];
+  const double S = -F[kVert];
+  const double D = -F[kRoll] + geo.r0() * F[kLat];
+  double a[2];
+  for (int i = 0; i < 2; ++i) {
+    double num = 0.0, den = 0.0, vmin = 1e9, amin = geo.l0();
+    for (int j = 0; j < strips[i].n; ++j) {
+      const contact::StripPoint& q = strips[i].s[j];
+      const double u = 1.0 - q.gap / 2e-4;
+      if (u > 0.0) {
+        num += u * u * q.lateral;
+        den += u * u;
+      }
+      if (q.gap < vmin) {
+        vmin = q.gap;
+        amin = q.lateral;
+      }
+    }
+    a[i] = den > 0.0 ? num / den : amin;
+  }
+  Qlat[0] = (S * a[1] + D) / (a[0] + a[1]);
+  Qlat[1] = (S * a[0] - D) / (a[0] + a[1]);
+  for (int i = 0; i < 2; ++i) {
+    const int side = i == 0 ? 1 : -1;
+    if (!(Qlat[i] > 0.0)) {
+      char buf[320];
+      std::snprintf(buf, sizeof buf,
+                    "wheelset '%s', %s wheel: loss of contact (vertical load %.4g N) [model: lateral wheelset, "
+                    "quasi-static loads; use the full wheelset model for wheel lift]",
+                    ws.name.c_str(), i == 0 ? "left" : "right", Qlat[i]);
+      d.fail(buf);
+      return false;
+    }
+    strip_approach_for_load(strips[i], Qlat[i], side * k.phi, Es, L);
+    patches_to_points(L, mat, g[i], N[i]);
+  }
+  return true;
 }
 
 }  // namespace
@@ -151,18 +251,26 @@ bool wheelset_forces(const Model& model, Data& d, int w, const double* x, double
     return false;
   }
 
-  // Geometry of both wheels, once.
+  // Geometry of both wheels, once: points with Hertz laws, or strips.
+  const bool distributed = geo.distributed();
   WheelGeometry g[2];
+  contact::StripSet strips[2];
+  double N[2][WheelGeometry::kMaxPoints] = {};
+  double Qlat[2] = {0.0, 0.0};
   for (int i = 0; i < 2; ++i) {
     const int side = i == 0 ? 1 : -1;
+    if (distributed) {
+      geo.strips(side * k.y, side * k.psi, kStripGapCutoff, strips[i]);
+      continue;
+    }
     geo.evaluate(side * k.y, side * k.psi, g[i]);
     for (int p = 0; p < g[i].n; ++p) complete_point(g[i].p[p], ws.static_load[i], ws.hertz_q0[i]);
   }
 
   // Normal loads.
-  double N[2][WheelGeometry::kMaxPoints] = {};
-  double Qlat[2] = {0.0, 0.0};
-  if (full) {
+  if (distributed) {
+    if (!distributed_loads(model, d, w, k, strips, g, N, Qlat)) return false;
+  } else if (full) {
     RigidPose ref;
     if (!geo.reference_follows_shift()) geo.rigid_pose(k.y, k.psi, ref);
     for (int i = 0; i < 2; ++i) {
