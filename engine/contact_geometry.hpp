@@ -99,6 +99,11 @@ class ContactGeometry {
     return false;
   }
   virtual bool distributed() const { return false; }
+  // True when the contact angles are those of the rail's normal in the track
+  // frame (profiles: the wheelset's roll is already in them); false when they
+  // are measured from the wheelset's axle (tables, cones: the force
+  // resolution adds the roll, theta = delta + side phi).
+  virtual bool angles_in_track_frame() const { return distributed(); }
   // Contact modulus E* = E / (2 (1 - nu^2)) of the strips [Pa] (distributed only).
   virtual double contact_modulus() const { return 0.0; }
   // True when the geometry's reference state (N = N0 at dq = 0) already

@@ -52,8 +52,10 @@ struct Data {
   long invalid_contact_calls = 0;      // evaluations with a contact outside its validity domain
   std::string first_invalid_reason;
   bool failed = false;
+  bool derailed = false;               // the failure is a derailment (physics), not numerics
   std::string failure;                 // set when rhs returns false
   void fail(std::string msg);
+  void derail(std::string msg);
 };
 
 }  // namespace railsim::engine

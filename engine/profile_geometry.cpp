@@ -68,7 +68,7 @@ void ProfileGeometry::evaluate(double s, double yaw, WheelGeometry& out) const {
   contact::StripPose pose;
   table_.pose(s, yaw, pose);
   StripLoads loads;
-  strip_approach_for_load(set, kReferenceLoad, pose.roll, Es_, loads);
+  strip_approach_for_load(set, kReferenceLoad, 0.0, Es_, loads);
   out.n = loads.n;
   for (int k = 0; k < loads.n; ++k) {
     ContactPointGeometry& c = out.p[k];

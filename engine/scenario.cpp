@@ -1,16 +1,20 @@
 // Scenario YAML reader; see scenario.hpp.
 #include "engine/scenario.hpp"
 
+#include <spdlog/spdlog.h>
+
 #include <cctype>
 #include <cmath>
 #include <filesystem>
 
 #include "contact/geometry/profile.hpp"
+#include "contact/geometry/conicity.hpp"
 #include "contact/geometry/wheel_rail_geometry.hpp"
 #include "contact/hertz.hpp"
 #include "contact/reduction.hpp"
 #include "core/errors.hpp"
 #include "engine/conical_geometry.hpp"
+#include "engine/equilibrium.hpp"
 #include "engine/geometry_table.hpp"
 #include "engine/profile_geometry.hpp"
 #include "engine/system.hpp"
@@ -147,7 +151,7 @@ Scenario load_scenario(const std::string& path) {
 }
 
 Scenario load_scenario(const InputNode& root, const std::string& base) {
-  root.allow_only({"name", "description", "vehicle", "track", "speed", "speed_kmh", "acceleration",
+  root.allow_only({"name", "description", "vehicle", "track", "speed", "speed_kmh", "acceleration", "start",
                    "start_distance", "duration", "output_interval", "wheelset_model", "max_lateral_shift",
                    "wheelset_roll",
                    "contact", "integrator", "initial", "critical_speed", "running_safety"});
@@ -200,6 +204,9 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
   }
   auto geo = load_geometry(c.at("geometry"), base, co.material);
   sc.geometry_description = geo->describe();
+  if (geo->max_shift() >= 3e-3)
+    sc.equivalent_conicity_3mm = contact::equivalent_conicity(
+        [&](double y) { return geo->main_point(y).rolling_radius - geo->main_point(-y).rolling_radius; }, 3e-3, 400);
   for (auto& w : m.wheelsets) w.geometry = geo;
   co.tangential = c.string_or("tangential", "coefficients");
   co.saturation = c.string_or("saturation", "none");
@@ -276,6 +283,21 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
   if (auto cs = root.find("critical_speed")) sc.critical_speed = load_critical_speed_settings(*cs);
   sc.running_safety = root.find("running_safety");
   sc.x0 = Eigen::VectorXd::Zero(m.n_states);
+  // Start from the (quasi-)static state (equilibrium.hpp), the user's
+  // deviations on top; `start: nominal` keeps x = 0.
+  const std::string start = root.string_or("start", "equilibrium");
+  if (start != "equilibrium" && start != "nominal")
+    root.at("start").fail("expected 'equilibrium' or 'nominal' (got '" + start + "')");
+  if (start == "equilibrium") {
+    const EquilibriumResult eq = static_equilibrium(m, 0.0);
+    if (eq.converged) {
+      sc.x0 = eq.x;
+    } else {
+      spdlog::warn("scenario '{}': no static equilibrium at the start ({}); starting from the nominal state",
+                   sc.name, eq.message);
+    }
+    sc.start_residual = eq.residual;
+  }
   if (auto init = root.find("initial")) {
     for (const auto& key : init->keys()) {
       int idx = -1;
@@ -286,7 +308,7 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
         for (const auto& n : m.state_names) known += (known.empty() ? "" : ", ") + n;
         init->at(key).fail("unknown state '" + key + "' (states: " + known + ")");
       }
-      sc.x0[idx] = init->number(key);
+      sc.x0[idx] += init->number(key);
     }
   }
   return sc;

@@ -48,6 +48,43 @@ inline void complete_point(ContactPointGeometry& c, double N0, double q0) {
   }
 }
 
+// The wheelset has left the geometry's range. With the wheel toward which it
+// moved in flange contact (contact angle above 50 degrees at the range's edge)
+// it has climbed past its flange: a derailment. Otherwise no physics takes a
+// wheelset there (a blow-up of the integration or an absurd input): a
+// numerical failure that says what to change.
+void range_failure(const Model& model, Data& d, int w, const WheelsetKinematics& k, double ymax) {
+  const Wheelset& ws = model.wheelsets[w];
+  const ContactGeometry& geo = *ws.geometry;
+  char buf[480];
+  if (!(std::abs(k.psi) <= geo.max_yaw())) {
+    std::snprintf(buf, sizeof buf,
+                  "wheelset '%s': yaw %.4g mrad exceeds the contact geometry's range of %.4g mrad (shift %.4g mm) "
+                  "[model: %s wheelset]; if the vehicle is not derailing, extend the geometry's max_yaw",
+                  ws.name.c_str(), k.psi * 1e3, geo.max_yaw() * 1e3, k.y * 1e3, wheelset_model_name(model.wheelset_model));
+    d.fail(buf);
+    return;
+  }
+  const double edge = std::copysign(std::min(std::abs(k.y), 0.999 * geo.max_shift()), k.y);
+  const ContactPointGeometry c = geo.main_point(std::abs(edge));  // the wheel toward which it moved
+  const bool flange = std::isfinite(k.y) && c.contact_angle > 50.0 * M_PI / 180.0;
+  if (flange) {
+    std::snprintf(buf, sizeof buf,
+                  "derailment: wheelset '%s' climbed past its flange (lateral shift %.4g mm relative to the track, "
+                  "beyond the geometry's %.4g mm; contact angle there %.1f deg) [model: %s wheelset]",
+                  ws.name.c_str(), k.y * 1e3, ymax * 1e3, c.contact_angle * 180.0 / M_PI,
+                  wheelset_model_name(model.wheelset_model));
+    d.derail(buf);
+  } else {
+    std::snprintf(buf, sizeof buf,
+                  "wheelset '%s': lateral shift %.4g mm relative to the track left the contact geometry's range of "
+                  "%.4g mm without flange contact [model: %s wheelset]: not a physical state (integration blow-up "
+                  "or an input out of range); reduce max_step or the tolerances, or check the scenario",
+                  ws.name.c_str(), k.y * 1e3, ymax * 1e3, wheelset_model_name(model.wheelset_model));
+    d.fail(buf);
+  }
+}
+
 // Strip gaps beyond this never carry load (approaches stay below ~0.3 mm) [m].
 constexpr double kStripGapCutoff = 1.5e-3;
 
@@ -88,7 +125,7 @@ bool distributed_loads(const Model& model, Data& d, int w, const WheelsetKinemat
       const double zr = i == 0 ? T.vert_left : T.vert_right;
       const double dzr = i == 0 ? T.dvert_left : T.dvert_right;
       const double wi = ws.static_approach[i] - (m.q[kVert] - zr - ref.height);
-      strip_loads(strips[i], wi, side * (k.phi - ref.roll), side * k.phi, Es, L);
+      strip_loads(strips[i], wi, side * (k.phi - ref.roll), 0.0, Es, L);
       patches_to_points(L, mat, g[i], N[i]);
       if (cn > 0.0) {
         const double rate0 = m.v[kVert] - d.V * dzr - ref.dheight_dy * k.ydot;
@@ -130,7 +167,6 @@ bool distributed_loads(const Model& model, Data& d, int w, const WheelsetKinemat
   Qlat[0] = (S * a[1] + D) / (a[0] + a[1]);
   Qlat[1] = (S * a[0] - D) / (a[0] + a[1]);
   for (int i = 0; i < 2; ++i) {
-    const int side = i == 0 ? 1 : -1;
     if (!(Qlat[i] > 0.0)) {
       char buf[320];
       std::snprintf(buf, sizeof buf,
@@ -140,7 +176,7 @@ bool distributed_loads(const Model& model, Data& d, int w, const WheelsetKinemat
       d.fail(buf);
       return false;
     }
-    strip_approach_for_load(strips[i], Qlat[i], side * k.phi, Es, L);
+    strip_approach_for_load(strips[i], Qlat[i], 0.0, Es, L);
     patches_to_points(L, mat, g[i], N[i]);
   }
   return true;
@@ -241,13 +277,8 @@ bool wheelset_forces(const Model& model, Data& d, int w, const double* x, double
   k.phi = m.q[kRoll];  // full: state; lateral: kinematic roll (0 when switched off)
   k.phidot = m.v[kRoll];
   const double ymax = model.max_lateral_shift > 0 ? model.max_lateral_shift : geo.max_shift();
-  if (!(std::abs(k.y) <= ymax)) {
-    char buf[320];
-    std::snprintf(buf, sizeof buf,
-                  "wheelset '%s': lateral shift %.4g mm relative to the track exceeds the admissible %.4g mm "
-                  "(contact geometry range) [model: %s wheelset]",
-                  ws.name.c_str(), k.y * 1e3, ymax * 1e3, wheelset_model_name(model.wheelset_model));
-    d.fail(buf);
+  if (!(std::abs(k.y) <= ymax) || !(std::abs(k.psi) <= geo.max_yaw())) {
+    range_failure(model, d, w, k, ymax);
     return false;
   }
 
@@ -328,6 +359,7 @@ bool wheelset_forces(const Model& model, Data& d, int w, const double* x, double
   }
 
   // Creep forces, resolution, sums.
+  const bool track_angles = geo.angles_in_track_frame();
   double Fy_sum = 0, Fz_sum = 0, Mx_sum = 0, Mz_sum = 0, My_sum = 0;
   for (int i = 0; i < 2; ++i) {
     const int side = i == 0 ? 1 : -1;
@@ -351,7 +383,7 @@ bool wheelset_forces(const Model& model, Data& d, int w, const double* x, double
       const contact::Creepages cr = wheel_creepages(k, c, side);
       const contact::ContactForces cf =
           model.coupling.forces(c, Np, ws.static_load[i], cr, d.V, d.workspace[2 * w + i].get());
-      const double th = c.contact_angle + side * k.phi;
+      const double th = c.contact_angle + (track_angles ? 0.0 : side * k.phi);
       const double ct = std::cos(th), st = std::sin(th);
       const double X = cf.Fx - cf.Fy * k.psi * cd;
       const double Y = cf.Fx * k.psi + cf.Fy * ct - side * Np * st - side * c.flange_force;
@@ -381,6 +413,17 @@ bool wheelset_forces(const Model& model, Data& d, int w, const double* x, double
       }
     }
     if (!full) out.Q = Qlat[i];
+    if (out.N > 10.0 * ws.static_load[i]) {  // no physics loads a wheel like this: the numerics broke down
+      char buf[320];
+      std::snprintf(buf, sizeof buf,
+                    "wheelset '%s', %s wheel: normal load %.4g kN is more than ten times its static %.4g kN "
+                    "[model: %s wheelset]: the contact or the integration broke down; reduce max_step or the "
+                    "tolerances, or check the scenario",
+                    ws.name.c_str(), i == 0 ? "left" : "right", out.N * 1e-3, ws.static_load[i] * 1e-3,
+                    wheelset_model_name(model.wheelset_model));
+      d.fail(buf);
+      return false;
+    }
     if (!(out.N > 0)) {
       valid = false;
       reason = "loss of contact (wheel lift)";

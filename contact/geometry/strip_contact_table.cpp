@@ -9,14 +9,14 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <filesystem>
 #include <fstream>
-#include <unistd.h>
 
 #include <boost/math/interpolators/cardinal_cubic_b_spline.hpp>
 
-#include "contact/geometry/contact_table.hpp"
 #include "contact/hertz.hpp"
+#include "core/atomic_file.hpp"
+#include "core/cache_dir.hpp"
+#include "core/content_hash.hpp"
 #include "core/errors.hpp"
 
 namespace railsim::contact {
@@ -30,18 +30,6 @@ std::string num(double v) {
   return buf;
 }
 
-struct Fnv {
-  unsigned long long h = 1469598103934665603ULL;
-  void mix(const void* p, std::size_t n) {
-    const auto* b = static_cast<const unsigned char*>(p);
-    for (std::size_t i = 0; i < n; ++i) {
-      h ^= b[i];
-      h *= 1099511628211ULL;
-    }
-  }
-  void mix(double v) { mix(&v, sizeof v); }
-  void mix(unsigned long long v) { mix(&v, sizeof v); }
-};
 
 // Hertz's constant K = N / delta^{3/2} = E* A^{-1/2} g(B/A) and the Winkler
 // factor f(B/A) = (3/4) K sqrt(B) / E* = (3/4) g sqrt(B/A), tabulated in
@@ -392,17 +380,17 @@ StripContactTable StripContactTable::cached(const WheelRailGeometry& geometry, c
                                             bool* loaded_from_cache) {
   grid.validate();
   if (loaded_from_cache) *loaded_from_cache = false;
-  const std::string dir = cache_dir.empty() ? ContactTable::default_cache_dir() : cache_dir;
-  Fnv f;
-  f.mix(kMagic, sizeof kMagic);
-  f.mix(wheel.content_hash());
-  f.mix(rail.content_hash());
+  const std::string dir = resolve_cache_dir(cache_dir);
+  ContentHash f;
+  f.bytes(kMagic, sizeof kMagic);
+  f.value(wheel.content_hash());
+  f.value(rail.content_hash());
   const TrackSetup& s = geometry.setup();
   const SearchOptions& o = geometry.options();
   for (double v : {s.gauge, s.gauge_depth, s.flange_back, s.back_face, s.r0, s.inclination, grid.y_min, grid.y_max,
                    grid.y_step, grid.yaw_max, grid.yaw_step, grid.strip, grid.gap_store, o.wheel_step, o.rail_step})
-    f.mix(v);
-  const unsigned long long key = f.h;
+    f.value(v);
+  const unsigned long long key = f.value();
   char name[64];
   std::snprintf(name, sizeof name, "strip_table_%016llx.bin", key);
   const std::string path = dir + "/" + name;
@@ -443,22 +431,20 @@ StripContactTable StripContactTable::cached(const WheelRailGeometry& geometry, c
     }
   }
   StripContactTable t = build(geometry, grid);
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  const std::string tmp = path + ".tmp" + std::to_string(static_cast<long>(::getpid()));
-  std::ofstream out(tmp, std::ios::binary);
-  if (out) {
-    const long long hdr[5] = {t.ny_, t.nk_, t.strips_total_, static_cast<long long>(t.entries_.size()), 0};
-    out.write(kMagic, 8);
-    out.write(reinterpret_cast<const char*>(&key), sizeof key);
-    out.write(reinterpret_cast<const char*>(hdr), sizeof hdr);
-    out.write(reinterpret_cast<const char*>(&t.t0_), sizeof t.t0_);
-    out.write(reinterpret_cast<const char*>(t.y_wheel_.data()), std::streamsize(t.y_wheel_.size() * sizeof(double)));
-    out.write(reinterpret_cast<const char*>(t.rows_.data()), std::streamsize(t.rows_.size() * sizeof(Row)));
-    out.write(reinterpret_cast<const char*>(t.entries_.data()), std::streamsize(t.entries_.size() * sizeof(Entry)));
-    out.close();
-    if (out) std::filesystem::rename(tmp, path, ec);
-    if (ec || !out) std::filesystem::remove(tmp, ec);
+  // Best effort: an unwritable cache costs a rebuild next time, not a failure.
+  try {
+    const std::string folder = railsim::cache_dir(dir, "strip contact table");
+    write_file_atomically(folder + "/" + name, [&](std::ostream& out) {
+      const long long hdr[5] = {t.ny_, t.nk_, t.strips_total_, static_cast<long long>(t.entries_.size()), 0};
+      out.write(kMagic, 8);
+      out.write(reinterpret_cast<const char*>(&key), sizeof key);
+      out.write(reinterpret_cast<const char*>(hdr), sizeof hdr);
+      out.write(reinterpret_cast<const char*>(&t.t0_), sizeof t.t0_);
+      out.write(reinterpret_cast<const char*>(t.y_wheel_.data()), std::streamsize(t.y_wheel_.size() * sizeof(double)));
+      out.write(reinterpret_cast<const char*>(t.rows_.data()), std::streamsize(t.rows_.size() * sizeof(Row)));
+      out.write(reinterpret_cast<const char*>(t.entries_.data()), std::streamsize(t.entries_.size() * sizeof(Entry)));
+    });
+  } catch (const InputError&) {
   }
   return t;
 }

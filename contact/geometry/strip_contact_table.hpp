@@ -65,7 +65,7 @@ struct StripPoint {
 
 // Strips of one wheel, increasing index; no allocation.
 struct StripSet {
-  static constexpr int kMax = 160;
+  static constexpr int kMax = 320;
   int n = 0;
   double width = 0.0;  // strip width [m]
   StripPoint s[kMax];
