@@ -22,7 +22,7 @@
 namespace railsim::contact {
 
 namespace {
-constexpr char kMagic[8] = {'R', 'S', 'S', 'T', 'R', 'P', '0', '2'};
+constexpr char kMagic[8] = {'R', 'S', 'S', 'T', 'R', 'P', '0', '3'};
 
 std::string num(double v) {
   char buf[64];
@@ -173,7 +173,10 @@ StripContactTable StripContactTable::build(const WheelRailGeometry& g, const Str
         r.v[jj] = std::isfinite(p.gap) && cd > 0 ? std::clamp(p.gap, 0.0, 2.0 * grid.gap_store) : 2.0 * grid.gap_store;
         r.angle[jj] = p.angle;
         r.lateral[jj] = p.y - y;
-        r.lead[jj] = p.x;
+        // Lead in the wheelset's frame (ahead of the axle's vertical plane), not
+        // the track-frame x, which also holds the yaw rotation of the lateral
+        // position (-psi a): the creepages' spin term -x Omega needs the former.
+        r.lead[jj] = p.x * std::cos(psi) + (p.y - y) * std::sin(psi);
         r.height[jj] = p.height;
         r.A[jj] = p.A;
         r.f[jj] = winkler_factor(p.B / p.A);

@@ -15,7 +15,8 @@
 //           where the vertical gap changes by ~tan(angle) x the shift),
 //   angle   contact angle of the rail's normal there [rad] (left-wheel sign),
 //   lateral lateral position from the wheelset centre [m],
-//   lead    position along the track ahead of the axle [m] (yaw),
+//   lead    position ahead of the axle's vertical plane, in the wheelset's
+//           frame [m] (yaw; zero at a tread contact below the axle),
 //   height  height below the axle, r cos(theta) [m] (CONTACT's rolling radius),
 //   A       longitudinal relative curvature [1/m],
 //   f       Winkler modulus of the strip per unit E*, kappa / E*, for which a

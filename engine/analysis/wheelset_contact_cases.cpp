@@ -65,7 +65,7 @@ std::vector<WheelsetContactResult> wheelset_contact(const WheelsetContactSetup& 
         q.gap = std::max(0.0, p.gap);
         q.angle = sg * p.angle;
         q.lateral = sg * (p.y - pos.y);
-        q.lead = p.x;
+        q.lead = p.x * std::cos(pos.yaw) + (p.y - pos.y) * std::sin(pos.yaw);  // wheelset frame
         q.height = p.height;
         q.A = p.A;
         q.f = contact::StripContactTable::winkler_factor(p.B / p.A);
@@ -74,52 +74,84 @@ std::vector<WheelsetContactResult> wheelset_contact(const WheelsetContactSetup& 
       if (set.n == 0)
         throw InputError("wheelset contact: y = " + num(pos.y) + " m, yaw = " + num(pos.yaw) + " rad: the " +
                          (i == 0 ? "left" : "right") + " wheel does not meet its rail");
-      StripLoads L;
-      WheelsetContactWheel& W = r.wheel[i];
-      W.approach = strip_approach_for_load(set, pos.Fz, 0.0, Es, L);
-      // Rail-profile positions: the rail point below each patch's centre.
+      // The wheelset rolling steadily (no rates).
       WheelsetKinematics k;
       k.V = s.speed;
       k.Omega = pos.has_omega ? pos.omega : s.speed / s.track.r0;
       k.y = pos.y;
       k.psi = pos.yaw;
       k.phi = c.roll;
-      double X = 0, Y = 0, Z = 0;
-      for (int p = 0; p < L.n; ++p) {
-        WheelsetContactPatch P;
-        ContactPointGeometry g = L.patch[p];
-        P.N = L.N[p];
-        P.contact_angle = g.contact_angle;
-        P.rolling_radius = g.rolling_radius;
-        P.a = g.semi_a;
-        P.b = g.semi_b;
-        P.y_track = pos.y + sg * g.lateral;
-        P.x_track = g.lead;
-        // The profile positions of the patch centre: the strip nearest to its lateral position.
-        double best = 1e9;
-        for (int j = 0; j < set.n; ++j)
-          if (std::abs(set.s[j].lateral - g.lateral) < best) {
-            best = std::abs(set.s[j].lateral - g.lateral);
-            P.y_wheel = set.s[j].y_wheel;
-          }
-        P.y_rail = sg * P.y_track - geo.rail_offset();  // placed (inclined) rail profile, field side positive
-        P.creep = wheel_creepages(k, g, int(sg));
-        contact::ContactInput in;
-        if (P.a > 0 && P.b > 0) in.patch = contact::hertz_from_semi_axes(P.a, P.b, P.N, s.material);
-        in.patch.Fz = P.N;
-        in.creep = P.creep;
-        in.material = s.material;
-        in.rolling_speed = s.speed;
-        P.forces = model->solve(in, ws.get());
-        const double ct = std::cos(g.contact_angle), st = std::sin(g.contact_angle);
-        X += P.forces.Fx - P.forces.Fy * pos.yaw * ct;
-        Y += P.forces.Fx * pos.yaw + P.forces.Fy * ct - sg * P.N * st;
-        Z += sg * P.forces.Fy * st + P.N * ct;
-        W.patches.push_back(P);
+      // The wheel's patches, creep forces and total force on the rail when the
+      // normal loads' vertical components add up to Qn.
+      auto wheel_forces = [&](double Qn, WheelsetContactWheel& W) {
+        StripLoads L;
+        W = WheelsetContactWheel{};
+        W.approach = strip_approach_for_load(set, Qn, 0.0, Es, L);
+        double X = 0, Y = 0, Z = 0;
+        for (int p = 0; p < L.n; ++p) {
+          WheelsetContactPatch P;
+          ContactPointGeometry g = L.patch[p];
+          P.N = L.N[p];
+          P.contact_angle = g.contact_angle;
+          P.rolling_radius = g.rolling_radius;
+          P.a = g.semi_a;
+          P.b = g.semi_b;
+          P.y_track = pos.y + sg * g.lateral;
+          P.x_track = g.lead * std::cos(pos.yaw) - sg * g.lateral * std::sin(pos.yaw);  // back to the track frame
+          // The profile positions of the patch centre: the strip nearest to its lateral position.
+          double best = 1e9;
+          for (int j = 0; j < set.n; ++j)
+            if (std::abs(set.s[j].lateral - g.lateral) < best) {
+              best = std::abs(set.s[j].lateral - g.lateral);
+              P.y_wheel = set.s[j].y_wheel;
+            }
+          P.y_rail = sg * P.y_track - geo.rail_offset();  // placed (inclined) rail profile, field side positive
+          P.creep = wheel_creepages(k, g, int(sg));
+          contact::ContactInput in;
+          if (P.a > 0 && P.b > 0) in.patch = contact::hertz_from_semi_axes(P.a, P.b, P.N, s.material);
+          in.patch.Fz = P.N;
+          in.creep = P.creep;
+          in.material = s.material;
+          in.rolling_speed = s.speed;
+          P.forces = model->solve(in, ws.get());
+          const double ct = std::cos(g.contact_angle), st = std::sin(g.contact_angle);
+          X += P.forces.Fx - P.forces.Fy * pos.yaw * ct;
+          Y += P.forces.Fx * pos.yaw + P.forces.Fy * ct - sg * P.N * st;
+          Z += sg * P.forces.Fy * st + P.N * ct;
+          W.patches.push_back(P);
+        }
+        W.Fx = -X;  // the wheel on the rail
+        W.Fy = -Y;
+        W.Fz = -Z;
+      };
+      // The prescribed Fz is the wheel's total vertical force, creep forces
+      // included (as in CONTACT's wheelset problems): in flange contact the
+      // lateral creep force carries a large part of it (mu tan(delta) of the
+      // normal part at 66 deg), so the normal part is found by the secant
+      // method on Z(Qn) - Fz, from Qn = Fz.
+      WheelsetContactWheel& W = r.wheel[i];
+      double q0 = pos.Fz;
+      wheel_forces(q0, W);
+      double g0 = -W.Fz - pos.Fz;
+      double q1 = std::max(0.05 * pos.Fz, pos.Fz - g0);
+      bool converged = std::abs(g0) <= 1e-9 * pos.Fz;
+      for (int it = 0; it < 50 && !converged; ++it) {
+        wheel_forces(q1, W);
+        const double g1 = -W.Fz - pos.Fz;
+        if (std::abs(g1) <= 1e-9 * pos.Fz) {
+          converged = true;
+          break;
+        }
+        double q2 = (g1 != g0) ? q1 - g1 * (q1 - q0) / (g1 - g0) : q1 - g1;
+        q2 = std::clamp(q2, 0.5 * q1, 2.0 * q1);  // keep the normal part positive and the step bounded
+        q0 = q1;
+        g0 = g1;
+        q1 = q2;
       }
-      W.Fx = -X;  // the wheel on the rail
-      W.Fy = -Y;
-      W.Fz = -Z;
+      if (!converged)
+        throw NumericalError("wheelset contact: y = " + num(pos.y) + " m, yaw = " + num(pos.yaw) + " rad: the " +
+                             (i == 0 ? "left" : "right") + " wheel's vertical force " + num(pos.Fz) +
+                             " N is not reached (the creep forces carry it off, mu tan(delta) near 1?)");
     }
     out.push_back(std::move(r));
   }

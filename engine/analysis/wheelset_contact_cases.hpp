@@ -58,7 +58,7 @@ struct WheelsetContactPatch {
   double N = 0.0;                 // normal load [N]
   double y_wheel = 0.0;  // wheel-profile lateral coordinate of the strip nearest the patch centre [m]
   double y_rail = 0.0;   // lateral coordinate of the patch centre on the placed (inclined) rail profile [m]
-  double y_track = 0.0, x_track = 0.0; // position in the track frame [m]
+  double y_track = 0.0, x_track = 0.0; // position in the track frame [m] (x: ahead of the wheelset centre)
   double rolling_radius = 0.0;    // height below the axle [m]
   double contact_angle = 0.0;     // [rad], railsim's sign (left wheel flange > 0, right wheel flange < 0)
   double a = 0.0, b = 0.0;        // equivalent ellipse semi-axes [m]

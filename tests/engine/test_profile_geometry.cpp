@@ -106,11 +106,14 @@ TEST_CASE("profile geometry: the strip table matches the exact search between it
             exact.point_at(contact::Side::left, g.table().strip_parameter(q.index), y, c.z[0], c.roll, yaw);
         worst_gap = std::max(worst_gap, std::abs(q.gap - p.gap));
         worst_angle = std::max(worst_angle, std::abs(q.angle - p.angle));
-        worst_lead = std::max(worst_lead, std::abs(q.lead - p.x));
+        // Lead in the wheelset's frame (ahead of the axle's vertical plane):
+        // the track-frame x of the point rotated back by the yaw.
+        const double lead = p.x * std::cos(yaw) + (p.y - y) * std::sin(yaw);
+        worst_lead = std::max(worst_lead, std::abs(q.lead - lead));
         worst_height = std::max(worst_height, std::abs(q.height - p.height));
         CHECK(q.gap == Approx(p.gap).margin(10e-6));
         CHECK(q.angle == Approx(p.angle).margin(0.01));
-        CHECK(q.lead == Approx(p.x).margin(0.2e-3));
+        CHECK(q.lead == Approx(lead).margin(0.2e-3));
         CHECK(q.height == Approx(p.height).margin(0.05e-3));
         ++checked;
       }
@@ -141,7 +144,9 @@ TEST_CASE("profile geometry: the right wheel at -y, -yaw mirrors the left wheel"
       if (std::abs(q.y_wheel - right.y_wheel) > 0.6e-3) continue;
       CHECK(q.angle == Approx(-right.angle).margin(0.03));             // the right wheel's angle is negative
       CHECK(q.lateral == Approx(-(right.y - y)).margin(0.6e-3));       // its lateral position is at -y
-      CHECK(q.lead == Approx(right.x).margin(0.3e-3 + 0.05 * std::abs(right.x)));  // lead is not mirrored
+      // The lead (wheelset frame, ahead of the axle) is not mirrored.
+      const double lead = right.x * std::cos(yaw) + (right.y - y) * std::sin(yaw);
+      CHECK(q.lead == Approx(lead).margin(0.3e-3 + 0.05 * std::abs(lead)));
     }
 }
 
