@@ -94,9 +94,15 @@ void SundialsCommon::make_linear_solver(const Eigen::VectorXd& x0, double t0) {
 
 int SundialsCommon::rhs_cb(double t, N_Vector yv, N_Vector ydot, void* user) {
   auto* self = static_cast<SundialsCommon*>(user);
-  if (self->sys.rhs(t, N_VGetArrayPointer(yv), N_VGetArrayPointer(ydot))) return 0;
+  if (self->sys.rhs(t, N_VGetArrayPointer(yv), N_VGetArrayPointer(ydot))) {
+    self->model_failed = false;
+    return 0;
+  }
+  // Recoverable: the state was a trial of the integrator (a step too long
+  // for the contact, a wheel far into its rail); CVODE / ARKode retry with a
+  // shorter step and fail with the model's message when the failure persists.
   self->model_failed = true;
-  return -1;  // unrecoverable: the model itself broke down
+  return 1;
 }
 
 int SundialsCommon::jac_cb(double t, N_Vector yv, N_Vector fy, SUNMatrix Jm, void* user, N_Vector, N_Vector,
@@ -111,13 +117,13 @@ int SundialsCommon::jac_cb(double t, N_Vector yv, N_Vector fy, SUNMatrix Jm, voi
     for (std::size_t k = 0; k < self->rowind.size(); ++k) ri[k] = self->rowind[k];
     if (!self->sys.sparse_jacobian(t, N_VGetArrayPointer(yv), N_VGetArrayPointer(fy), SUNSparseMatrix_Data(Jm))) {
       self->model_failed = true;
-      return -1;
+      return 1;  // recoverable, as in rhs_cb
     }
     return 0;
   }
   if (!self->sys.jacobian(t, N_VGetArrayPointer(yv), N_VGetArrayPointer(fy), self->J.data())) {
     self->model_failed = true;
-    return -1;
+    return 1;  // recoverable, as in rhs_cb
   }
   if (SUNMatGetID(Jm) == SUNMATRIX_BAND) {
     for (int j = 0; j < n; ++j)

@@ -48,9 +48,9 @@ inline void complete_point(ContactPointGeometry& c, double N0, double q0) {
   }
 }
 
-// The wheelset has left the geometry's range. With the wheel toward which it
-// moved in flange contact (contact angle above 50 degrees at the range's edge)
-// it has climbed past its flange: a derailment. Otherwise no physics takes a
+// The wheelset has left the geometry's range. When the wheel toward which it
+// moved has a flange on the way (contact angle above 50 degrees between half
+// the range and its edge) it has climbed past its flange: a derailment. Otherwise no physics takes a
 // wheelset there (a blow-up of the integration or an absurd input): a
 // numerical failure that says what to change.
 void range_failure(const Model& model, Data& d, int w, const WheelsetKinematics& k, double ymax) {
@@ -65,21 +65,34 @@ void range_failure(const Model& model, Data& d, int w, const WheelsetKinematics&
     d.fail(buf);
     return;
   }
-  const double edge = std::copysign(std::min(std::abs(k.y), 0.999 * geo.max_shift()), k.y);
-  const ContactPointGeometry c = geo.main_point(std::abs(edge));  // the wheel toward which it moved
-  const bool flange = std::isfinite(k.y) && c.contact_angle > 50.0 * M_PI / 180.0;
+  // The steepest contact angle the wheel toward which it moved meets between
+  // half the range and the range's edge: a flanged wheel (above 50 degrees on
+  // the way) has been lifted over its flank to get there.
+  const double edge = std::min(std::abs(k.y), 0.999 * geo.max_shift());
+  ContactPointGeometry c;
+  double steepest = 0.0;
+  for (int i = 0; i <= 40 && std::isfinite(k.y); ++i) {
+    const ContactPointGeometry p = geo.main_point(0.5 * edge * (1.0 + i / 40.0));
+    if (p.contact_angle > steepest) {
+      steepest = p.contact_angle;
+      c = p;
+    }
+  }
+  const bool flange = std::isfinite(k.y) && steepest > 50.0 * M_PI / 180.0;
   if (flange) {
     std::snprintf(buf, sizeof buf,
                   "derailment: wheelset '%s' climbed past its flange (lateral shift %.4g mm relative to the track, "
-                  "beyond the geometry's %.4g mm; contact angle there %.1f deg) [model: %s wheelset]",
+                  "beyond the geometry's %.4g mm; flank angle on the way %.1f deg) [model: %s wheelset]",
                   ws.name.c_str(), k.y * 1e3, ymax * 1e3, c.contact_angle * 180.0 / M_PI,
                   wheelset_model_name(model.wheelset_model));
     d.derail(buf);
   } else {
     std::snprintf(buf, sizeof buf,
-                  "wheelset '%s': lateral shift %.4g mm relative to the track left the contact geometry's range of "
-                  "%.4g mm without flange contact [model: %s wheelset]: not a physical state (integration blow-up "
-                  "or an input out of range); reduce max_step or the tolerances, or check the scenario",
+                  "wheelset '%s': lateral shift %.4g mm relative to the track exceeds the admissible %.4g mm of "
+                  "the contact geometry, without flange contact [model: %s wheelset]: the run left the model's "
+                  "range (a growing oscillation on a geometry without flange, or an integration blow-up), not a "
+                  "derailment; widen the geometry (max_lateral_shift, profiles), or reduce max_step or the "
+                  "tolerances",
                   ws.name.c_str(), k.y * 1e3, ymax * 1e3, wheelset_model_name(model.wheelset_model));
     d.fail(buf);
   }
