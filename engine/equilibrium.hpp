@@ -27,9 +27,10 @@ struct EquilibriumResult {
   std::string message;    // why not, when not converged
 };
 
-// Newton from x = 0 at time t0; at most `max_iterations`. No throw on
+// Newton from x = 0 at time t0 (steps limited to 1 mm of wheelset shift and
+// 2 mrad of yaw, halved until the residual falls); at most `max_iterations`. No throw on
 // non-convergence (the caller decides); NumericalError when the model fails.
-EquilibriumResult static_equilibrium(const Model& model, double t0 = 0.0, int max_iterations = 30,
+EquilibriumResult static_equilibrium(const Model& model, double t0 = 0.0, int max_iterations = 80,
                                      double tolerance = 1e-6);
 
 }  // namespace railsim::engine
