@@ -72,7 +72,10 @@ std::shared_ptr<const ContactGeometry> load_geometry(const InputNode& g, const s
     GeometryTableOptions o;
     if (g.has("node_step")) o.node_step = g.in_range("node_step", 1e-6, 2e-3);
     if (g.has("smoothing")) o.smoothing = g.in_range("smoothing", 0.0, 2e-3);
-    return std::make_shared<GeometryTable>(existing_file(g.at("file"), base), o);
+    auto table = std::make_shared<GeometryTable>(existing_file(g.at("file"), base), o);
+    spdlog::info("contact geometry: {}; largest deviation of the fit from the rows: {}", table->describe(),
+                 table->deviation_report());
+    return table;
   }
   if (type == "profiles") {
     g.allow_only({"type", "wheel", "rail", "inclination", "gauge", "gauge_depth", "flange_back", "back_face", "r0",
