@@ -22,7 +22,7 @@
 namespace {
 
 std::string scenario_path(const char* file) {
-  return (std::filesystem::path(__FILE__).parent_path().parent_path() / "scenarios" / file).string();
+  return (std::filesystem::path(RAILSIM_SOURCE_DIR) / "scenarios" / file).string();
 }
 
 // Wall time of the one-thread sweep, for the speed-up of the two-thread one

@@ -19,7 +19,7 @@
 namespace {
 
 std::string scenario_path(const char* file) {
-  return (std::filesystem::path(__FILE__).parent_path().parent_path() / "scenarios" / file).string();
+  return (std::filesystem::path(RAILSIM_SOURCE_DIR) / "scenarios" / file).string();
 }
 
 void run_scene(benchmark::State& state, const char* file, const char* wheelset_model, const char* method,

@@ -8,6 +8,8 @@
 
 #include "contact/geometry/contact_table.hpp"
 #include "contact/geometry/semi_hertz.hpp"
+#include "engine/geometry_table.hpp"
+#include "engine/profile_geometry.hpp"
 
 using namespace railsim::contact;
 
@@ -85,5 +87,48 @@ static void BM_SemiHertzS1002(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_SemiHertzS1002)->Unit(benchmark::kMillisecond);
+
+// The engine's geometry per right-hand side with yaw (issue 13: target under
+// 200 ns per wheel from a table). Profiles: the strips of one wheel
+// near the contact at a shift and yaw, from the cached strip table
+// (built on first use, about 25 s); RSGEO: one table evaluation of one wheel.
+// Shifts and yaws cycle through 256 random poses in +-8 mm, +-10 mrad.
+static void BM_StripsWithYaw(benchmark::State& state) {
+  static const railsim::engine::ProfileGeometry g = [] {
+    railsim::engine::ProfileGeometryParams p;
+    p.setup.inclination = std::atan(1.0 / 40.0);
+    return railsim::engine::ProfileGeometry(p, Material{});
+  }();
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> dy(-8e-3, 8e-3), dpsi(-10e-3, 10e-3);
+  std::vector<std::pair<double, double>> poses(256);
+  for (auto& q : poses) q = {dy(rng), dpsi(rng)};
+  StripSet s;
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const auto& q = poses[i++ & 255];
+    g.strips(q.first, q.second, railsim::engine::ProfileGeometry::kGapCutoff, s);
+    benchmark::DoNotOptimize(s.n);
+  }
+  state.SetLabel("per wheel");
+}
+BENCHMARK(BM_StripsWithYaw);
+
+static void BM_RsgeoEvaluate(benchmark::State& state) {
+  static const railsim::engine::GeometryTable g(std::string(RAILSIM_SOURCE_DIR) +
+                                                "/vehicles/contact_tables/RSGEO_S1002_UIC60_1in40.dat");
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> dy(-8e-3, 8e-3);
+  std::vector<double> ys(256);
+  for (auto& y : ys) y = dy(rng);
+  railsim::engine::WheelGeometry out;
+  std::size_t i = 0;
+  for (auto _ : state) {
+    g.evaluate(ys[i++ & 255], 0.0, out);
+    benchmark::DoNotOptimize(out.n);
+  }
+  state.SetLabel("per wheel");
+}
+BENCHMARK(BM_RsgeoEvaluate);
 
 BENCHMARK_MAIN();

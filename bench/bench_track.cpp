@@ -13,7 +13,7 @@ namespace {
 
 // tracks/ folder of this source tree (this file is bench/bench_track.cpp).
 std::string track_path(const char* file) {
-  return (std::filesystem::path(__FILE__).parent_path().parent_path() / "tracks" / file).string();
+  return (std::filesystem::path(RAILSIM_SOURCE_DIR) / "tracks" / file).string();
 }
 
 void track_at(benchmark::State& state, const char* file) {

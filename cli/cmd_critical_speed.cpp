@@ -177,6 +177,8 @@ void fill_summary(Json& s, const engine::Scenario& sc, const CriticalSpeedArgs& 
   s.set("scenario", sc.name);
   s.set("vehicle", sc.model.vehicle_name);
   s.set("method", a.method);
+  s.set("geometry", sc.geometry_description);
+  s.set("equivalent_conicity_3mm", sc.equivalent_conicity_3mm);
   s.set("contact_model", sc.model.coupling.options().tangential);
   s.set("contact_description", sc.model.coupling.describe());
   s.set("reduction", contact::describe_reduction(sc.model.coupling.options().reduction));

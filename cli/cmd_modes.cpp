@@ -25,6 +25,7 @@
 #include "engine/scenario.hpp"
 #include "results/chart.hpp"
 #include "results/csv_writer.hpp"
+#include "results/json_writer.hpp"
 
 namespace railsim::cli {
 
@@ -84,11 +85,23 @@ int run_modes(const ModesArgs& a) {
   chart.lines.push_back({0.0, "zero damping", "0.5", false});
   results::draw(chart, a.out + "/modes.png");
   results::draw(fchart, a.out + "/modes_frequency.png");
+  results::Json summary = results::Json::object();
+  summary.set("scenario", sc.name);
+  summary.set("vehicle", sc.model.vehicle_name);
+  summary.set("wheelset_model", engine::wheelset_model_name(sc.model.wheelset_model));
+  summary.set("geometry", sc.geometry_description);
+  summary.set("equivalent_conicity_3mm", sc.equivalent_conicity_3mm);
+  summary.set("contact", sc.model.coupling.describe());
+  summary.set("mu", sc.model.coupling.options().material.mu);
+  summary.set("speed_range_kmh", results::Json::array().push(a.v_min_kmh).push(a.v_max_kmh));
+  summary.set("speed_step_kmh", a.v_step_kmh);
+  summary.set("linear_critical_speed_kmh", std::isnan(v_lin) ? results::Json(nullptr) : results::Json(v_lin * 3.6));
+  summary.write_file(a.out + "/summary.json");
   if (std::isnan(v_lin))
     std::printf("linear critical speed: none in %.0f..%.0f km/h (stable throughout)\n", a.v_min_kmh, a.v_max_kmh);
   else
     std::printf("linear critical speed: %.1f km/h\n", v_lin * 3.6);
-  std::printf("wrote %s/modes.csv, modes.png, modes_frequency.png (%d speeds)\n", a.out.c_str(), n);
+  std::printf("wrote %s/modes.csv, summary.json, modes.png, modes_frequency.png (%d speeds)\n", a.out.c_str(), n);
   return kExitSuccess;
 }
 

@@ -3,8 +3,10 @@
 // (support_scenario_overrides.hpp), and write DIR/channels.csv,
 // DIR/summary.json, DIR/yq.png and DIR/sum_y_rms.png
 // (engine/analysis/scenario_run.hpp says what they hold). A numerical failure
-// still writes summary.json (status "failed", the message) before exiting
-// with code 3; bad input (including a bad --set) exits 2 naming the option.
+// still writes summary.json (status "failed", the message, no running-safety
+// verdict) before exiting with code 3; a derailment is a result (status
+// "derailed", running safety failed), exit 0; bad input (including a bad
+// --set) exits 2 naming the option.
 #include "cli/commands.hpp"
 #include "cli/support_scenario_overrides.hpp"
 #include "core/errors.hpp"

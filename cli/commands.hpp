@@ -25,5 +25,6 @@ void register_demo(CLI::App& app, CommandRunner& run);
 void register_geometry(CLI::App& app, CommandRunner& run);
 void register_conicity(CLI::App& app, CommandRunner& run);
 void register_track(CLI::App& app, CommandRunner& run);
+void register_wheelset_contact(CLI::App& app, CommandRunner& run);
 
 }  // namespace railsim::cli

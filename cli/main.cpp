@@ -32,6 +32,7 @@ int main(int argc, char** argv) {
   railsim::cli::register_geometry(app, run);
   railsim::cli::register_conicity(app, run);
   railsim::cli::register_track(app, run);
+  railsim::cli::register_wheelset_contact(app, run);
 
   try {
     app.parse(argc, argv);

@@ -30,4 +30,13 @@ class NumericalError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A run that ended because the vehicle derailed (the physics, not the
+// numerics: a wheelset past its flange). Derived from NumericalError so that
+// every handler that stops a run also stops on it; a run report tells the two
+// apart and gives derailment a running-safety verdict, numerical failure none.
+class DerailmentError : public NumericalError {
+ public:
+  using NumericalError::NumericalError;
+};
+
 }  // namespace railsim

@@ -27,7 +27,7 @@ class ArkodeErk final : public Integrator {
     ERKStepSetUserData(mem_, &c_);
     ERKStepSetErrHandlerFn(mem_, &SundialsCommon::err_cb, &c_);
     ERKStepSetTableNum(mem_, ARKODE_DORMAND_PRINCE_7_4_5);
-    ERKStepSStolerances(mem_, c_.opt.rtol, c_.opt.atol);
+    ERKStepSVtolerances(mem_, c_.opt.rtol, c_.abs_tolerances());
     if (c_.opt.max_step > 0) ERKStepSetMaxStep(mem_, c_.opt.max_step);
     if (c_.opt.initial_step > 0) ERKStepSetInitStep(mem_, c_.opt.initial_step);
     ERKStepSetMinStep(mem_, c_.opt.min_step);
@@ -74,14 +74,14 @@ class ArkodeDirk final : public Integrator {
     mem_ = ARKStepCreate(nullptr, &SundialsCommon::rhs_cb, t0, c_.y, c_.ctx);
     ARKStepSetUserData(mem_, &c_);
     ARKStepSetErrHandlerFn(mem_, &SundialsCommon::err_cb, &c_);
-    ARKStepSStolerances(mem_, c_.opt.rtol, c_.opt.atol);
+    ARKStepSVtolerances(mem_, c_.opt.rtol, c_.abs_tolerances());
     if (c_.opt.max_step > 0) ARKStepSetMaxStep(mem_, c_.opt.max_step);
     if (c_.opt.initial_step > 0) ARKStepSetInitStep(mem_, c_.opt.initial_step);
     ARKStepSetMinStep(mem_, c_.opt.min_step);
     ARKStepSetMaxNumSteps(mem_, c_.opt.max_steps);
     c_.make_linear_solver(x0, t0);
     ARKStepSetLinearSolver(mem_, c_.LS, c_.A);
-    if (c_.opt.jacobian == "assembled") ARKStepSetJacFn(mem_, &SundialsCommon::jac_cb);
+    if (c_.opt.jacobian == "assembled" || c_.opt.linear_solver == "klu") ARKStepSetJacFn(mem_, &SundialsCommon::jac_cb);
   }
   void advance(double t_out, Eigen::VectorXd& x) override {
     ARKStepSetStopTime(mem_, t_out);

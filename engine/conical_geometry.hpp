@@ -5,6 +5,8 @@
 // curvatures (A, B) for Hertz. Optional flange: a dead-band lateral spring
 // F = k_f (s - c) for s > c (Kaas-Petersen 1986 style), pushing the wheelset
 // back toward the track centre. Klingel (1883); physics-reference §8.1-8.2.
+// Rigid pose on knife-edge rails: roll (r_L - r_R)/(2 l0) = lambda y / l0,
+// axle height (r_L + r_R)/2 - r0 = 0. No yaw dependence.
 #pragma once
 
 #include "engine/contact_geometry.hpp"
@@ -25,7 +27,8 @@ struct ConicalParams {
 class ConicalGeometry final : public ContactGeometry {
  public:
   explicit ConicalGeometry(const ConicalParams& p) : p_(p) {}
-  void evaluate(double s, WheelContact& out) const override;
+  void evaluate(double s, double yaw, WheelGeometry& out) const override;
+  bool rigid_pose(double y, double yaw, RigidPose& out) const override;
   double r0() const override { return p_.r0; }
   double l0() const override { return p_.l0; }
   double max_shift() const override { return p_.max_shift; }

@@ -27,15 +27,16 @@ class CvodeIntegrator final : public Integrator {
     CVodeInit(mem_, &SundialsCommon::rhs_cb, t0, c_.y);
     CVodeSetUserData(mem_, &c_);
     CVodeSetErrHandlerFn(mem_, &SundialsCommon::err_cb, &c_);
-    CVodeSStolerances(mem_, c_.opt.rtol, c_.opt.atol);
+    CVodeSVtolerances(mem_, c_.opt.rtol, c_.abs_tolerances());
     if (c_.opt.max_step > 0) CVodeSetMaxStep(mem_, c_.opt.max_step);
     if (c_.opt.initial_step > 0) CVodeSetInitStep(mem_, c_.opt.initial_step);
     CVodeSetMinStep(mem_, c_.opt.min_step);
     CVodeSetMaxNumSteps(mem_, c_.opt.max_steps);
     if (c_.opt.max_order > 0) CVodeSetMaxOrd(mem_, c_.opt.max_order);
+    if (c_.opt.stability_limit_detection) CVodeSetStabLimDet(mem_, SUNTRUE);
     c_.make_linear_solver(x0, t0);
     CVodeSetLinearSolver(mem_, c_.LS, c_.A);
-    if (c_.opt.jacobian == "assembled") CVodeSetJacFn(mem_, &SundialsCommon::jac_cb);
+    if (c_.opt.jacobian == "assembled" || c_.opt.linear_solver == "klu") CVodeSetJacFn(mem_, &SundialsCommon::jac_cb);
   }
   void advance(double t_out, Eigen::VectorXd& x) override {
     const int flag = CVode(mem_, t_out, c_.y, &t_, CV_NORMAL);

@@ -16,6 +16,13 @@ Data::Data(const Model& model)
 
 void Data::fail(std::string msg) {
   failed = true;
+  derailed = false;
+  failure = std::move(msg);
+}
+
+void Data::derail(std::string msg) {
+  failed = true;
+  derailed = true;
   failure = std::move(msg);
 }
 

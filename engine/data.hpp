@@ -25,6 +25,7 @@ struct WheelOutput {
   double contact_y = 0.0;       // lateral position of the contact point on the rail, track y [m]
   double contact_angle = 0.0;   // [rad]
   double rolling_radius = 0.0;  // [m]
+  double contact_lead = 0.0;    // [m] of the most loaded point, ahead of the axle
   bool valid = true;
   const char* reason = "";
 };
@@ -51,8 +52,10 @@ struct Data {
   long invalid_contact_calls = 0;      // evaluations with a contact outside its validity domain
   std::string first_invalid_reason;
   bool failed = false;
+  bool derailed = false;               // the failure is a derailment (physics), not numerics
   std::string failure;                 // set when rhs returns false
   void fail(std::string msg);
+  void derail(std::string msg);
 };
 
 }  // namespace railsim::engine

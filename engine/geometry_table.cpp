@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
@@ -10,7 +11,8 @@
 
 namespace railsim::engine {
 
-GeometryTable::GeometryTable(const std::string& path) : path_(path) {
+GeometryTable::GeometryTable(const std::string& path, const GeometryTableOptions& options)
+    : path_(path), options_(options) {
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open contact-geometry table");
   std::string line;
@@ -27,12 +29,24 @@ GeometryTable::GeometryTable(const std::string& path) : path_(path) {
     if (!(h > 0)) throw InputError(where + ": shift column must increase");
     for (std::size_t i = 1; i < n; ++i)
       if (std::abs(cols[0][i] - cols[0][i - 1] - h) > 0.05 * h)
-        throw InputError(where + ": row " + std::to_string(i + 1) + " of the block: shift grid is not uniform");
+        throw InputError(where + ": row " + std::to_string(i + 1) + " of the block: shift grid is not uniform "
+                         "(rows must be sorted by shift with a constant step)");
+    std::vector<double> raw(n * kCols);
+    for (std::size_t i = 0; i < n; ++i)
+      for (int k = 0; k < kCols; ++k) raw[i * kCols + std::size_t(k)] = cols[std::size_t(k + 1)][i];
     Block b;
     b.s_min = cols[0].front();
     b.s_max = cols[0].back();
-    for (int k = 1; k < 12; ++k) b.col.emplace_back(cols[k].begin(), cols[k].end(), b.s_min, h);
-    if (blocks_.empty()) rows_ = n;
+    if (options_.smoothing > 0.0) {
+      const double node = std::max(options_.node_step, h), half = std::max(options_.smoothing, h);
+      b.fit = contact::SmoothColumns::fit_noisy(raw, n, kCols, b.s_min, h, node, half);
+    } else {
+      b.fit = contact::SmoothColumns::interpolate(raw, n, kCols, b.s_min, h);
+    }
+    if (blocks_.empty()) {
+      rows_ = n;
+      raw_step_ = h;
+    }
     blocks_.push_back(std::move(b));
     for (auto& c : cols) c.clear();
     header_seen = false;
@@ -59,39 +73,81 @@ GeometryTable::GeometryTable(const std::string& path) : path_(path) {
       throw InputError(path + ":" + std::to_string(lineno) + ": expected 13 numbers per row");
     for (int k = 0; k < 12; ++k) {
       if (!std::isfinite(v[k])) throw InputError(path + ":" + std::to_string(lineno) + ": non-finite number");
-      cols[k].push_back(v[k]);
+      cols[std::size_t(k)].push_back(v[k]);
     }
   }
   finish_block();
   if (blocks_.empty()) throw InputError(path + ": no table rows");
   s_min_ = blocks_.front().s_min;
   s_max_ = std::min(-s_min_, blocks_.front().s_max);
-  WheelContact w;
-  evaluate(0.0, w);
-  r0_ = w.rolling_radius;
-  l0_ = w.lateral;
+  if (!(s_max_ > 0.0))
+    throw InputError(path + ": the first block must cover shifts on both sides of zero (the table is used "
+                     "symmetrically for the two wheels)");
+  const ContactPointGeometry c = main_point(0.0);
+  r0_ = c.rolling_radius;
+  l0_ = c.lateral;
 }
 
-void GeometryTable::evaluate_point(double s, int k, WheelContact& out) const {
-  const Block& b = blocks_[static_cast<std::size_t>(k)];
-  out = WheelContact{};
-  if (k == 0) s = std::clamp(s, b.s_min, b.s_max);
-  else if (s < b.s_min || s > b.s_max) return;  // this point does not exist at this shift (no load)
-  out.N0 = b.col[0](s);
-  out.contact_angle = b.col[1](s);
-  out.semi_a = b.col[2](s);
-  out.semi_b = b.col[3](s);
-  out.lateral = b.col[4](s);
-  out.rolling_radius = b.col[5](s);
-  out.C11 = b.col[6](s);
-  out.C22 = b.col[7](s);
-  out.C23 = b.col[8](s);
-  out.q0 = b.col[10](s);
+void GeometryTable::evaluate(double s, double yaw, WheelGeometry& out) const {
+  (void)yaw;  // the table does not depend on yaw
+  out.n = 0;
+  double v[kCols];
+  for (std::size_t k = 0; k < blocks_.size(); ++k) {
+    const Block& b = blocks_[k];
+    if (k > 0 && (s < b.s_min || s > b.s_max)) continue;  // this point does not exist at this shift (no load)
+    b.fit.eval(std::clamp(s, b.s_min, b.s_max), v);
+    ContactPointGeometry& p = out.p[out.n++];
+    p = ContactPointGeometry{};
+    p.N0 = v[kN0];
+    p.contact_angle = v[kDelta];
+    p.semi_a = v[kSemiA];
+    p.semi_b = v[kSemiB];
+    p.lateral = v[kLateral];
+    p.rolling_radius = v[kRadius];
+    p.C11 = v[kC11];
+    p.C22 = v[kC22];
+    p.C23 = v[kC23];
+    p.q0 = v[kQ0];
+    if (out.n == WheelGeometry::kMaxPoints) break;
+  }
+}
+
+bool GeometryTable::rigid_pose(double y, double yaw, RigidPose& out) const {
+  (void)yaw;
+  const Block& b = blocks_.front();
+  double L[kCols], dL[kCols], R[kCols], dR[kCols];
+  b.fit.eval(std::clamp(y, b.s_min, b.s_max), L, dL);
+  b.fit.eval(std::clamp(-y, b.s_min, b.s_max), R, dR);
+  const double num = L[kRadius] - R[kRadius], den = L[kLateral] + R[kLateral];
+  const double dnum = dL[kRadius] + dR[kRadius], dden = dL[kLateral] - dR[kLateral];  // d/dy (right wheel at -y)
+  out = RigidPose{};
+  out.roll = num / den;
+  out.droll_dy = dnum / den - num * dden / (den * den);
+  return true;
+}
+
+std::string GeometryTable::deviation_report() const {
+  static const char* names[kCols] = {"N0", "contact angle", "a", "b", "lateral position", "rolling radius",
+                                     "C11", "C22", "C23", "z_c", "q0"};
+  std::string s;
+  const auto& d = blocks_.front().fit.deviation();
+  for (int k = 0; k < kCols && k < int(d.size()); ++k) {
+    char buf[128];
+    std::snprintf(buf, sizeof buf, "%s%s %.3g at %.3f mm", s.empty() ? "" : "; ", names[k], d[std::size_t(k)].max_abs,
+                  d[std::size_t(k)].at * 1e3);
+    s += buf;
+  }
+  return s;
 }
 
 std::string GeometryTable::describe() const {
-  return "table " + path_ + " (" + std::to_string(blocks_.size()) + " contact point(s), " + std::to_string(rows_) + " rows, shift " + std::to_string(s_min_ * 1e3) +
-         " .. " + std::to_string(s_max_ * 1e3) + " mm)";
+  char buf[512];
+  std::snprintf(buf, sizeof buf,
+                "table %s (%d contact point(s), %zu rows at %.3g mm, shift %.2f .. %.2f mm; smoothed: local quadratic "
+                "half-width %.3g mm, nodes every %.3g mm)",
+                path_.c_str(), blocks(), rows_, raw_step_ * 1e3, s_min_ * 1e3, s_max_ * 1e3,
+                options_.smoothing * 1e3, std::max(options_.node_step, raw_step_) * 1e3);
+  return buf;
 }
 
 }  // namespace railsim::engine

@@ -21,6 +21,10 @@ bool OdeSystem::jacobian(double t, const double* x, const double* fx, double* J)
   return true;
 }
 
+void OdeSystem::tolerances(const IntegratorOptions& options, double* atol) const {
+  for (int i = 0; i < size(); ++i) atol[i] = options.atol;
+}
+
 const std::vector<IntegratorEntry>& integrators() {
   static const std::vector<IntegratorEntry> table = {
       {"cvode_bdf", "SUNDIALS CVODE variable-order BDF (implicit, stiff)", &make_cvode_integrator},
@@ -41,8 +45,8 @@ std::unique_ptr<Integrator> make_integrator(OdeSystem& sys, const IntegratorOpti
   if (!(o.rtol > 0 && o.atol > 0)) throw InputError("integrator: tolerances must be positive");
   if (o.jacobian != "fd" && o.jacobian != "assembled")
     throw InputError("integrator: jacobian must be 'fd' or 'assembled' (got '" + o.jacobian + "')");
-  if (o.linear_solver != "dense" && o.linear_solver != "band")
-    throw InputError("integrator: linear_solver must be 'dense' or 'band' (got '" + o.linear_solver + "')");
+  if (o.linear_solver != "auto" && o.linear_solver != "dense" && o.linear_solver != "band" && o.linear_solver != "klu")
+    throw InputError("integrator: linear_solver must be 'auto', 'klu', 'dense' or 'band' (got '" + o.linear_solver + "')");
   for (const auto& e : integrators())
     if (o.method == e.name) return e.make(sys, o);
   throw InputError("unknown integrator '" + o.method + "' (known: " + integrator_names() + ")");

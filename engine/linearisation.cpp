@@ -54,9 +54,7 @@ double max_real_part(const Model& model, double V) {
 }
 
 double critical_speed(const Model& model, double lo, double hi, double rel_tol) {
-  // Undamped modes (e.g. a suspension without dampers) have real parts of the
-  // order of the differencing error (~1e-10 1/s): growth below kZero counts as none.
-  constexpr double kZero = 1e-6;
+  constexpr double kZero = kUnstableGrowth;
   double flo = max_real_part(model, lo), fhi = max_real_part(model, hi);
   if (!(flo < kZero && fhi > kZero)) {
     char buf[200];

@@ -30,6 +30,10 @@ Eigen::MatrixXd state_jacobian(const Model& model, const Eigen::VectorXd& x0, do
 std::vector<Mode> modes(const Model& model, const Eigen::VectorXd& x0, bool oscillatory_only = true);
 // Largest real part of the oscillatory modes at speed V (x0 = 0).
 double max_real_part(const Model& model, double V);
+// Growth rate [1/s] above which a mode counts as unstable: undamped modes (a
+// suspension without dampers, e.g. a bogie pitch mode) have real parts of the
+// order of the differencing error (~1e-10 1/s).
+constexpr double kUnstableGrowth = 1e-6;
 // Bisection for the speed where max_real_part exceeds 1e-6 1/s in [v_lo, v_hi]
 // (undamped modes with real parts at rounding level count as stable);
 // throws NumericalError when it does not change sign there.

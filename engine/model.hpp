@@ -33,7 +33,10 @@ struct Wheelset {
   int body = -1;
   std::shared_ptr<const ContactGeometry> geometry;
   double static_load[2] = {0.0, 0.0};  // normal load per wheel at rest [N] (left, right)
-  double hertz_q0[2] = {0.0, 0.0};     // full model: static normal approach per wheel [m]
+  double hertz_q0[2] = {0.0, 0.0};     // q0 of points without a reference state (cones) [m]
+  // Full model: vertical approach of each wheel at x = 0 that carries its
+  // static load (finalize_model; wheelset_contact.hpp) [m].
+  double static_approach[2] = {0.0, 0.0};
   int beta_state = -1;                 // full model: spin perturbation state
 };
 

@@ -3,30 +3,28 @@
 
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 #include "contact/geometry/profile.hpp"
 #include "contact/hertz.hpp"
+#include "engine/strip_patches.hpp"
 
 namespace railsim::engine {
 
 namespace {
 
-contact::ContactTable make_table(const ProfileGeometryParams& p) {
+contact::StripContactTable make_table(const ProfileGeometryParams& p) {
   const contact::Profile wheel = contact::read_profile(p.wheel, contact::ProfileKind::wheel);
   const contact::Profile rail = contact::read_profile(p.rail, contact::ProfileKind::rail);
   p.setup.validate();
   p.grid.validate();
-  // Second points up to 1 mm of vertical gap: they close under the loads of
-  // flange contact (the Hertz approach is ~0.1 mm at 100 kN).
-  contact::SearchOptions search;
-  search.second_gap_max = 1.0e-3;
-  const contact::WheelRailGeometry geometry(wheel, rail, p.setup, search);
+  const contact::WheelRailGeometry geometry(wheel, rail, p.setup);
   bool cached = false;
-  auto table = contact::ContactTable::cached(geometry, wheel, rail, p.grid, p.cache_dir, &cached);
-  spdlog::debug("profile geometry {} on {}: contact table {} ({} rows)", p.wheel, p.rail,
-                cached ? "from the cache" : "computed", table.rows());
+  auto table = contact::StripContactTable::cached(geometry, wheel, rail, p.grid, p.cache_dir, &cached);
+  spdlog::debug("profile geometry {} on {}: strip table {} ({} strips, {} stored entries)", p.wheel, p.rail,
+                cached ? "from the cache" : "computed", table.strip_count(), table.stored_entries());
   return table;
 }
 
@@ -34,73 +32,58 @@ contact::ContactTable make_table(const ProfileGeometryParams& p) {
 
 ProfileGeometry::ProfileGeometry(const ProfileGeometryParams& params, const contact::Material& material)
     : table_(make_table(params)), material_(material) {
+  Es_ = material_.E / (2.0 * (1.0 - material_.nu * material_.nu));
   // The symmetric use needs the table on both sides of zero.
-  s_max_ = std::min(-params.grid.y_min, params.grid.y_max);
-  // Reference vertical approach: the centred wheel's at N0.
-  {
-    contact::TableSample t;
-    table_.lookup(0.0, t);
-    const contact::ContactPoint& p = t.wheel[static_cast<int>(contact::Side::left)].p[0];
-    const contact::HertzPatch h = contact::hertz_from_load(p.A, p.B, kReferenceLoad, material_);
-    w0_ = h.approach / std::cos(p.angle);
-  }
-  WheelContact c;
-  evaluate(0.0, c);
+  s_max_ = std::min(-table_.y_min(), table_.y_max());
+  const ContactPointGeometry c = main_point(0.0);
   r0_ = c.rolling_radius;
   l0_ = c.lateral;
-  char buf[256];
-  std::snprintf(buf, sizeof buf, "profiles %s on %s, inclination %.5f rad, gauge %.4f m, |y| <= %.1f mm",
+  char buf[320];
+  std::snprintf(buf, sizeof buf,
+                "profiles %s on %s, inclination %.5f rad, gauge %.4f m, |y| <= %.1f mm, |yaw| <= %.0f mrad, "
+                "strips %.2g mm",
                 params.wheel.c_str(), params.rail.c_str(), params.setup.inclination, params.setup.gauge,
-                s_max_ * 1e3);
+                s_max_ * 1e3, table_.yaw_max() * 1e3, params.grid.strip * 1e3);
   description_ = buf;
 }
 
-namespace {
-
-// One tabulated point as the engine sees it, with its Hertz patch and
-// approach at the reference load, and the offset `gap` that puts its normal
-// approach at the reference state (engine z = 0) at (w0 - v) cos(delta), v its
-// vertical gap in the rigid touching position (see the header).
-void fill(const contact::ContactPoint& p, double s, double w0, const contact::Material& material,
-          WheelContact& out) {
-  out = WheelContact{};
-  out.rolling_radius = p.radius;
-  out.contact_angle = p.angle;
-  out.lateral = p.y - s;
-  out.A = p.A;
-  out.B = p.B;
-  const contact::HertzPatch h = contact::hertz_from_load(p.A, p.B, ProfileGeometry::kReferenceLoad, material);
-  out.semi_a = h.a;
-  out.semi_b = h.b;
-  out.N0 = ProfileGeometry::kReferenceLoad;
-  out.q0 = h.approach;
-  const double cd = std::cos(p.angle);
-  out.gap = out.q0 - (w0 - p.gap / cd) * cd;  // table gaps are normal gaps: vertical = gap / cos(delta)
+bool ProfileGeometry::strips(double s, double yaw, double cutoff, contact::StripSet& out) const {
+  table_.strips(s, yaw, cutoff, out);
+  return true;
 }
 
-}  // namespace
-
-void ProfileGeometry::evaluate(double s, WheelContact& out) const {
-  contact::TableSample t;
-  table_.lookup(s, t);
-  fill(t.wheel[static_cast<int>(contact::Side::left)].p[0], s, w0_, material_, out);
+bool ProfileGeometry::rigid_pose(double y, double yaw, RigidPose& out) const {
+  contact::StripPose p;
+  table_.pose(y, yaw, p);
+  out.roll = p.roll;  // positive lifts the left (+y) side
+  out.droll_dy = p.droll_dy;
+  out.height = p.height;
+  out.dheight_dy = p.dheight_dy;
+  return true;
 }
 
-double ProfileGeometry::rigid_roll(double y) const {
-  contact::TableSample t;
-  table_.lookup(y, t);
-  return t.roll;  // the table's roll: positive lifts the left (+y) side
-}
-
-void ProfileGeometry::evaluate_point(double s, int k, WheelContact& out) const {
-  contact::TableSample t;
-  table_.lookup(s, t);
-  const contact::WheelContact& w = t.wheel[static_cast<int>(contact::Side::left)];
-  if (k >= w.n) {
-    out = WheelContact{};  // N0 = 0: no such point at this shift
-    return;
+void ProfileGeometry::evaluate(double s, double yaw, WheelGeometry& out) const {
+  contact::StripSet set;
+  table_.strips(s, yaw, kGapCutoff, set);
+  contact::StripPose pose;
+  table_.pose(s, yaw, pose);
+  StripLoads loads;
+  strip_approach_for_load(set, kReferenceLoad, 0.0, Es_, loads);
+  out.n = loads.n;
+  for (int k = 0; k < loads.n; ++k) {
+    ContactPointGeometry& c = out.p[k];
+    c = loads.patch[k];
+    const double N = loads.N[k];
+    if (c.A > 0 && c.B > 0 && N > 0) {
+      const contact::HertzPatch h = contact::hertz_from_load(c.A, c.B, N, material_);
+      c.semi_a = h.a;
+      c.semi_b = h.b;
+      c.N0 = N;
+      c.q0 = h.approach;
+    }
   }
-  fill(w.p[static_cast<std::size_t>(k)], s, w0_, material_, out);
+  // Most loaded first.
+  std::sort(out.p, out.p + out.n, [](const ContactPointGeometry& a, const ContactPointGeometry& b) { return a.N0 > b.N0; });
 }
 
 }  // namespace railsim::engine

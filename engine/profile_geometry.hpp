@@ -1,40 +1,27 @@
 // Contact geometry of real wheel and rail profiles for the engine: railsim's
-// own rigid contact search (contact/geometry/wheel_rail_geometry.hpp) tabulated
-// versus lateral shift (contact/geometry/contact_table.hpp, cached on disk),
-// seen through the engine's one-wheel interface (engine/contact_geometry.hpp).
+// own rigid contact search (contact/geometry/wheel_rail_geometry.hpp)
+// tabulated strip by strip versus lateral shift and yaw
+// (contact/geometry/strip_contact_table.hpp, cached on disk), seen through the
+// engine's one-wheel interface (engine/contact_geometry.hpp) as a distributed
+// contact: the wheelset models compute each wheel's normal loads and patches
+// from its strips and its approach (engine/strip_patches.hpp), so loads and
+// creep forces change continuously when a patch opens or closes and when the
+// contact slides through the flange root (S1002 on UIC60 1:40: near 6.25 mm,
+// where the rigid contact point jumps from about 37 to 70 degrees).
 //
-// The table is solved for the whole wheelset (both wheels, wheelset roll that
-// keeps both on their rails, zero yaw). The engine uses it symmetrically: for
-// a shift s toward a wheel it reads the LEFT wheel's entry at y = s (profiles,
-// track set-up and placement are mirror-symmetric). Per point: rolling radius,
-// contact angle (> 0 tilts the normal toward the track centre; the table's sign
-// for the left wheel), lateral distance of the point from the wheelset centre,
-// relative curvatures A, B, and the Hertz patch (a along the rolling direction,
-// from A; Hertz 1882, via contact/hertz.hpp) and approach at the reference load
-// N0 = 50 kN; the engine scales them as N^(1/3) and N^(2/3), exactly Hertz for
-// fixed curvatures. Kalker's coefficients follow from a/b in the coupling.
-// Two points per wheel (points() = 2): the main (touching) point and, where
-// the profiles have a second local minimum of the gap within 1 mm (S1002 on
-// UIC60 at 1:40: near 0 mm and 4.0-5.25 mm, the tread jump; none at the
-// flange jump, where the point slides through the flange root), that second
-// point with its own radius, angle, curvatures and Hertz patch. All points
-// share the wheel's vertical approach, measured from one reference that is
-// continuous in the shift: at the engine's z = 0 the wheel is pressed by
-// w0 = q0 / cos(delta) (the centred wheel's Hertz approach under N0) below its
-// rigid touching position at that shift, so point k has the normal approach
-//   q_k = (w0 - v_k) cos(delta_k),   v_k its vertical gap (0 for the touching point),
-// and carries N_k = K_k (q_k + dq_k)^{3/2} (Hertz, K_k = N0 / q0_k^{3/2} from its
-// own curvatures) while positive: the offsets `gap` of engine/contact_geometry.hpp.
-// The wheel's load thus passes continuously from one point to the other
-// (the table interpolates each point on its own, contact_table.hpp). The
-// lateral (quasi-static) model shares the wheel's load the same way
-// (wheelset_lateral.hpp). Wheelset yaw is not in the table (zero yaw).
-// Units SI (m, rad, 1/m, N).
+// The table is solved for the whole wheelset (both wheels, wheelset roll and
+// height that keep both on their rails) at yaw 0 .. yaw_max; the engine uses
+// it symmetrically: for a shift s toward a wheel and that wheel's yaw it reads
+// the LEFT wheel's entry at (s, yaw) (profiles, track set-up and placement are
+// mirror-symmetric; negative yaw is the fore-aft mirror). The rigid pose
+// (roll, axle height) is the table's. evaluate() gives the patches under the
+// reference load N_ref = 50 kN per wheel at the rigid pose's roll (statics,
+// reports). Units SI (m, rad, N, Pa).
 #pragma once
 
 #include <string>
 
-#include "contact/geometry/contact_table.hpp"
+#include "contact/geometry/strip_contact_table.hpp"
 #include "contact/types.hpp"
 #include "engine/contact_geometry.hpp"
 
@@ -44,31 +31,35 @@ struct ProfileGeometryParams {
   std::string wheel = "S1002";   // profile file or shipped name
   std::string rail = "UIC60";
   contact::TrackSetup setup;     // gauge, flange back, r0, inclination
-  contact::TableGrid grid{-0.015, 0.015, 1e-4};
+  contact::StripTableGrid grid;  // y and yaw ranges and steps, strip width
   std::string cache_dir;         // empty: the default contact-table cache folder
 };
 
 class ProfileGeometry final : public ContactGeometry {
  public:
-  static constexpr double kReferenceLoad = 5.0e4;  // N0 of the tabulated Hertz patch [N]
+  static constexpr double kReferenceLoad = 5.0e4;  // N_ref of evaluate() [N]
+  static constexpr double kGapCutoff = 1.5e-3;     // strips evaluated up to this gap [m]
 
-  // Builds (or loads from the cache) the contact table. InputError for bad
+  // Builds (or loads from the cache) the strip table. InputError for bad
   // profiles or set-up.
   ProfileGeometry(const ProfileGeometryParams& params, const contact::Material& material);
-  void evaluate(double s, WheelContact& out) const override;
-  int points() const override { return 2; }
-  double rigid_roll(double y) const override;
-  void evaluate_point(double s, int k, WheelContact& out) const override;
+  void evaluate(double s, double yaw, WheelGeometry& out) const override;
+  bool rigid_pose(double y, double yaw, RigidPose& out) const override;
+  bool strips(double s, double yaw, double cutoff, contact::StripSet& out) const override;
+  bool distributed() const override { return true; }
+  double contact_modulus() const override { return Es_; }
   double r0() const override { return r0_; }
   double l0() const override { return l0_; }
   double max_shift() const override { return s_max_; }
+  double max_yaw() const override { return table_.yaw_max(); }
   std::string describe() const override { return description_; }
+  const contact::StripContactTable& table() const { return table_; }
 
  private:
-  contact::ContactTable table_;
+  contact::StripContactTable table_;
   contact::Material material_;
+  double Es_ = 0.0;
   double r0_ = 0.0, l0_ = 0.0, s_max_ = 0.0;
-  double w0_ = 0.0;  // reference vertical approach [m]
   std::string description_;
 };
 

@@ -1,16 +1,20 @@
 // Scenario YAML reader; see scenario.hpp.
 #include "engine/scenario.hpp"
 
+#include <spdlog/spdlog.h>
+
 #include <cctype>
 #include <cmath>
 #include <filesystem>
 
 #include "contact/geometry/profile.hpp"
+#include "contact/geometry/conicity.hpp"
 #include "contact/geometry/wheel_rail_geometry.hpp"
 #include "contact/hertz.hpp"
 #include "contact/reduction.hpp"
 #include "core/errors.hpp"
 #include "engine/conical_geometry.hpp"
+#include "engine/equilibrium.hpp"
 #include "engine/geometry_table.hpp"
 #include "engine/profile_geometry.hpp"
 #include "engine/system.hpp"
@@ -64,12 +68,18 @@ std::shared_ptr<const ContactGeometry> load_geometry(const InputNode& g, const s
     return std::make_shared<ConicalGeometry>(p);
   }
   if (type == "table") {
-    g.allow_only({"type", "file"});
-    return std::make_shared<GeometryTable>(existing_file(g.at("file"), base));
+    g.allow_only({"type", "file", "node_step", "smoothing"});
+    GeometryTableOptions o;
+    if (g.has("node_step")) o.node_step = g.in_range("node_step", 1e-6, 2e-3);
+    if (g.has("smoothing")) o.smoothing = g.in_range("smoothing", 0.0, 2e-3);
+    auto table = std::make_shared<GeometryTable>(existing_file(g.at("file"), base), o);
+    spdlog::info("contact geometry: {}; largest deviation of the fit from the rows: {}", table->describe(),
+                 table->deviation_report());
+    return table;
   }
   if (type == "profiles") {
     g.allow_only({"type", "wheel", "rail", "inclination", "gauge", "gauge_depth", "flange_back", "back_face", "r0",
-                  "max_shift", "step", "cache_dir"});
+                  "max_shift", "step", "max_yaw", "yaw_step", "strip", "cache_dir"});
     ProfileGeometryParams p;
     auto profile = [&](const char* key, const std::string& fallback) {
       if (!g.has(key)) return fallback;
@@ -98,7 +108,12 @@ std::shared_ptr<const ContactGeometry> load_geometry(const InputNode& g, const s
     if (g.has("back_face")) p.setup.back_face = g.in_range("back_face", -0.2, 0.0);
     if (g.has("r0")) p.setup.r0 = g.in_range("r0", 0.1, 1.5);
     const double s_max = g.has("max_shift") ? g.in_range("max_shift", 0.002, 0.02) : 0.015;
-    p.grid = {-s_max, s_max, g.has("step") ? g.in_range("step", 1e-6, 1e-3) : 1e-4};
+    p.grid.y_min = -s_max;
+    p.grid.y_max = s_max;
+    if (g.has("step")) p.grid.y_step = g.in_range("step", 1e-5, 1e-3);
+    if (g.has("max_yaw")) p.grid.yaw_max = g.in_range("max_yaw", 0.0, 0.1);
+    if (g.has("yaw_step")) p.grid.yaw_step = g.in_range("yaw_step", 1e-4, 0.05);
+    if (g.has("strip")) p.grid.strip = g.in_range("strip", 1e-4, 5e-3);
     if (g.has("cache_dir")) p.cache_dir = resolve(base, g.string("cache_dir"));
     return std::make_shared<ProfileGeometry>(p, material);
   }
@@ -139,7 +154,7 @@ Scenario load_scenario(const std::string& path) {
 }
 
 Scenario load_scenario(const InputNode& root, const std::string& base) {
-  root.allow_only({"name", "description", "vehicle", "track", "speed", "speed_kmh", "acceleration",
+  root.allow_only({"name", "description", "vehicle", "track", "speed", "speed_kmh", "acceleration", "start",
                    "start_distance", "duration", "output_interval", "wheelset_model", "max_lateral_shift",
                    "wheelset_roll",
                    "contact", "integrator", "initial", "critical_speed", "running_safety"});
@@ -181,7 +196,7 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
   // Contact.
   const InputNode c = root.at("contact");
   c.allow_only({"geometry", "tangential", "saturation", "material", "reduction", "creep_coefficients", "patch",
-                "spin", "static_approach"});
+                "spin", "static_approach", "normal_damping"});
   CouplingOptions co;
   if (auto mat = c.find("material")) {
     mat->allow_only({"E", "nu", "mu", "shear_modulus"});
@@ -192,6 +207,9 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
   }
   auto geo = load_geometry(c.at("geometry"), base, co.material);
   sc.geometry_description = geo->describe();
+  if (geo->max_shift() >= 3e-3)
+    sc.equivalent_conicity_3mm = contact::equivalent_conicity(
+        [&](double y) { return geo->main_point(y).rolling_radius - geo->main_point(-y).rolling_radius; }, 3e-3, 400);
   for (auto& w : m.wheelsets) w.geometry = geo;
   co.tangential = c.string_or("tangential", "coefficients");
   co.saturation = c.string_or("saturation", "none");
@@ -214,10 +232,10 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
     co.N_ref = p->positive("N_ref");
   }
   if (auto sp = c.find("spin")) co.spin = sp->as_bool();
+  if (c.has("normal_damping")) co.normal_damping = c.in_range("normal_damping", 0.0, 1e8);
   // Tabulated geometries (table file, profiles) carry their own patch at N0.
   const bool table = c.at("geometry").string("type") != "conical";
-  WheelContact c0;
-  geo->evaluate(0.0, c0);
+  const ContactPointGeometry c0 = geo->main_point(0.0);
   const bool hertz = !table && c0.A > 0 && c0.B > 0;
   if (!table && co.patch_a <= 0 && !hertz && !(co.tangential == "coefficients" && co.f11 > 0))
     c.fail("conical wheels need 'creep_coefficients' (f11, f22, ...; tangential 'coefficients' only), 'patch' "
@@ -229,7 +247,7 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
   // Integrator.
   if (auto in = root.find("integrator")) {
     in->allow_only({"method", "rtol", "atol", "max_step", "initial_step", "min_step", "max_steps", "jacobian",
-                    "linear_solver", "max_order"});
+                    "linear_solver", "max_order", "stability_limit_detection", "atol_contact_modes"});
     auto& o = sc.integrator;
     o.method = in->string_or("method", o.method);
     if (in->has("rtol")) o.rtol = in->in_range("rtol", 0.0, 0.1, true);
@@ -239,14 +257,18 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
     if (in->has("min_step")) o.min_step = in->non_negative("min_step");
     if (in->has("max_steps")) o.max_steps = static_cast<long>(in->in_range("max_steps", 1, 1e9));
     if (in->has("max_order")) o.max_order = static_cast<int>(in->in_range("max_order", 1, 5));
+    if (in->has("atol_contact_modes")) o.atol_contact_modes = in->in_range("atol_contact_modes", 0.0, 1.0);
+    if (auto sl = in->find("stability_limit_detection")) o.stability_limit_detection = sl->as_bool();
     o.jacobian = in->string_or("jacobian", o.jacobian);
     o.linear_solver = in->string_or("linear_solver", o.linear_solver);
     bool known = false;
     for (const auto& e : integrators()) known |= o.method == e.name;
     if (!known) in->at("method").fail("unknown integrator '" + o.method + "' (known: " + integrator_names() + ")");
     if (o.jacobian != "fd" && o.jacobian != "assembled") in->at("jacobian").fail("expected 'fd' or 'assembled'");
-    if (o.linear_solver != "dense" && o.linear_solver != "band")
-      in->at("linear_solver").fail("expected 'dense' or 'band'");
+    if (o.linear_solver != "auto" && o.linear_solver != "dense" && o.linear_solver != "band" && o.linear_solver != "klu")
+      in->at("linear_solver").fail("expected 'auto', 'klu', 'dense' or 'band'");
+    if (o.linear_solver == "klu" && o.jacobian == "fd")
+      in->at("jacobian").fail("'fd' works with the dense and band solvers only; 'klu' needs 'assembled'");
   }
 
   finalize_model(m);
@@ -264,6 +286,21 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
   if (auto cs = root.find("critical_speed")) sc.critical_speed = load_critical_speed_settings(*cs);
   sc.running_safety = root.find("running_safety");
   sc.x0 = Eigen::VectorXd::Zero(m.n_states);
+  // Start from the (quasi-)static state (equilibrium.hpp), the user's
+  // deviations on top; `start: nominal` keeps x = 0.
+  const std::string start = root.string_or("start", "equilibrium");
+  if (start != "equilibrium" && start != "nominal")
+    root.at("start").fail("expected 'equilibrium' or 'nominal' (got '" + start + "')");
+  if (start == "equilibrium") {
+    const EquilibriumResult eq = static_equilibrium(m, 0.0);
+    if (eq.converged) {
+      sc.x0 = eq.x;
+    } else {
+      spdlog::warn("scenario '{}': no static equilibrium at the start ({}); starting from the nominal state",
+                   sc.name, eq.message);
+    }
+    sc.start_residual = eq.residual;
+  }
   if (auto init = root.find("initial")) {
     for (const auto& key : init->keys()) {
       int idx = -1;
@@ -274,7 +311,7 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
         for (const auto& n : m.state_names) known += (known.empty() ? "" : ", ") + n;
         init->at(key).fail("unknown state '" + key + "' (states: " + known + ")");
       }
-      sc.x0[idx] = init->number(key);
+      sc.x0[idx] += init->number(key);
     }
   }
   return sc;

@@ -27,7 +27,8 @@
 //     static_approach: 7e-5             # full model, conical wheels: Hertz approach at the static load [m]
 //   integrator: {method: cvode_bdf, rtol: 1e-6, atol: 1e-8, max_step: 0.001, jacobian: fd,
 //                linear_solver: dense, max_steps: 100000, min_step: 1e-12}
-//   initial: {ws1.lateral: 0.001}       # state name: value (deviations)
+//   start: equilibrium | nominal        # (quasi-)static state at t = 0 (default) or x = 0
+//   initial: {ws1.lateral: 0.001}       # state name: value (deviations from the start state)
 //   critical_speed:                     # optional: analysis settings that suit this vehicle
 //     {v_min_kmh: 150, v_max_kmh: 350, v_step_kmh: 10, duration: 6, disturbance_mm: 5,
 //      small_disturbance_mm: 0.5, threshold_mm: 0.5, continuation: false,
@@ -72,6 +73,11 @@ struct Scenario {
   double output_interval = 0.01;
   Eigen::VectorXd x0;
   std::string geometry_description;
+  // Equivalent conicity of the wheel-rail geometry at 3 mm amplitude (EN 15302
+  // regression on Delta r(y) of the main contact points, contact_geometry.hpp).
+  double equivalent_conicity_3mm = 0.0;
+  // Largest acceleration of the start state [m/s^2, rad/s^2] (equilibrium.hpp).
+  double start_residual = 0.0;
   CriticalSpeedSettings critical_speed;
 };
 

@@ -4,6 +4,9 @@
 #include <time.h>
 
 #include <chrono>
+#include <cstdio>
+
+#include "core/errors.hpp"
 #include <cmath>
 
 #include "engine/system.hpp"
@@ -44,7 +47,16 @@ RunSummary simulate(const Model& model, const IntegratorOptions& options, const 
   const long n_out = std::max(1L, std::lround(duration / dt_out));
   for (long k = 1; k <= n_out; ++k) {
     const double t = k == n_out ? duration : k * dt_out;
-    integ->advance(t, x);
+    try {
+      integ->advance(t, x);
+    } catch (const NumericalError& e) {
+      // A derailment is physics (the model says so), anything else numerics:
+      // say which, with the last step the integrator took.
+      char buf[96];
+      std::snprintf(buf, sizeof buf, " (last step %.3g s)", integ->stats().last_step);
+      if (data.derailed) throw DerailmentError(std::string(e.what()) + buf);
+      throw NumericalError(std::string(e.what()) + buf);
+    }
     report(t);
   }
   sum.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -2,7 +2,8 @@
 // the state at every output time to an observer (which receives a Data
 // evaluated at that state: wheel loads, forces, creepages). Measures wall
 // time and the real-time factor (simulated time / wall time). Failures throw
-// NumericalError (integrator.hpp).
+// NumericalError (integrator.hpp) naming the last step size; a derailment
+// (the model's physics: a wheelset past its flange) throws DerailmentError.
 #pragma once
 
 #include <Eigen/Core>

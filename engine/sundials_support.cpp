@@ -5,6 +5,8 @@
 
 #include <sunlinsol/sunlinsol_band.h>
 #include <sunlinsol/sunlinsol_dense.h>
+#include <sunlinsol/sunlinsol_klu.h>
+#include <sunmatrix/sunmatrix_sparse.h>
 #include <sunmatrix/sunmatrix_band.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
@@ -28,12 +30,21 @@ SundialsCommon::~SundialsCommon() {
   if (LS) SUNLinSolFree(LS);
   if (A) SUNMatDestroy(A);
   if (y) N_VDestroy(y);
+  if (atol_vec) N_VDestroy(atol_vec);
   if (ctx) SUNContext_Free(&ctx);
 }
 
 void SundialsCommon::load(const Eigen::VectorXd& x) {
   double* d = N_VGetArrayPointer(y);
   for (int i = 0; i < sys.size(); ++i) d[i] = x[i];
+}
+
+N_Vector SundialsCommon::abs_tolerances() {
+  if (!atol_vec) {
+    atol_vec = N_VNew_Serial(sys.size(), ctx);
+    sys.tolerances(opt, N_VGetArrayPointer(atol_vec));
+  }
+  return atol_vec;
 }
 
 void SundialsCommon::store(Eigen::VectorXd& x) const {
@@ -45,7 +56,21 @@ void SundialsCommon::store(Eigen::VectorXd& x) const {
 void SundialsCommon::make_linear_solver(const Eigen::VectorXd& x0, double t0) {
   const int n = sys.size();
   J.assign(std::size_t(n) * n, 0.0);
-  if (opt.linear_solver == "band") {
+  if (opt.linear_solver == "auto") {
+    std::vector<int> cp, ri;
+    opt.linear_solver = sys.pattern(cp, ri) ? "klu" : "dense";
+  }
+  if (opt.linear_solver == "klu" && opt.jacobian == "fd")
+    throw InputError("integrator: jacobian 'fd' works with the dense and band solvers only; 'klu' needs 'assembled'");
+  if (opt.linear_solver == "klu") {
+    // Sparse direct solver (KLU, Davis & Palamadai Natarajan 2010) on the
+    // model's structural pattern, Jacobian by coloured differences.
+    if (!sys.pattern(colptr, rowind))
+      throw InputError("integrator: linear_solver 'klu' needs a model with a sparsity pattern");
+    A = SUNSparseMatrix(n, n, sunindextype(rowind.size()), CSC_MAT, ctx);
+    LS = SUNLinSol_KLU(y, A, ctx);
+    if (!A || !LS) throw NumericalError("SUNDIALS: cannot create the KLU sparse solver");
+  } else if (opt.linear_solver == "band") {
     // Bandwidth from the Jacobian pattern at a slightly perturbed x0.
     Eigen::VectorXd xp = x0;
     for (int i = 0; i < n; ++i) xp[i] += 1e-6 * (1 + (i % 7)) / 7.0;
@@ -69,9 +94,15 @@ void SundialsCommon::make_linear_solver(const Eigen::VectorXd& x0, double t0) {
 
 int SundialsCommon::rhs_cb(double t, N_Vector yv, N_Vector ydot, void* user) {
   auto* self = static_cast<SundialsCommon*>(user);
-  if (self->sys.rhs(t, N_VGetArrayPointer(yv), N_VGetArrayPointer(ydot))) return 0;
+  if (self->sys.rhs(t, N_VGetArrayPointer(yv), N_VGetArrayPointer(ydot))) {
+    self->model_failed = false;
+    return 0;
+  }
+  // Recoverable: the state was a trial of the integrator (a step too long
+  // for the contact, a wheel far into its rail); CVODE / ARKode retry with a
+  // shorter step and fail with the model's message when the failure persists.
   self->model_failed = true;
-  return -1;  // unrecoverable: the model itself broke down
+  return 1;
 }
 
 int SundialsCommon::jac_cb(double t, N_Vector yv, N_Vector fy, SUNMatrix Jm, void* user, N_Vector, N_Vector,
@@ -79,9 +110,20 @@ int SundialsCommon::jac_cb(double t, N_Vector yv, N_Vector fy, SUNMatrix Jm, voi
   auto* self = static_cast<SundialsCommon*>(user);
   ++self->jac_evals;
   const int n = self->sys.size();
+  if (SUNMatGetID(Jm) == SUNMATRIX_SPARSE) {
+    sunindextype* cp = SUNSparseMatrix_IndexPointers(Jm);
+    sunindextype* ri = SUNSparseMatrix_IndexValues(Jm);
+    for (std::size_t j = 0; j < self->colptr.size(); ++j) cp[j] = self->colptr[j];
+    for (std::size_t k = 0; k < self->rowind.size(); ++k) ri[k] = self->rowind[k];
+    if (!self->sys.sparse_jacobian(t, N_VGetArrayPointer(yv), N_VGetArrayPointer(fy), SUNSparseMatrix_Data(Jm))) {
+      self->model_failed = true;
+      return 1;  // recoverable, as in rhs_cb
+    }
+    return 0;
+  }
   if (!self->sys.jacobian(t, N_VGetArrayPointer(yv), N_VGetArrayPointer(fy), self->J.data())) {
     self->model_failed = true;
-    return -1;
+    return 1;  // recoverable, as in rhs_cb
   }
   if (SUNMatGetID(Jm) == SUNMATRIX_BAND) {
     for (int j = 0; j < n; ++j)

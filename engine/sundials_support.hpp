@@ -27,18 +27,22 @@ struct SundialsCommon {
   // from the Jacobian pattern at x0 when a banded solver is asked for.
   void make_linear_solver(const Eigen::VectorXd& x0, double t0);
   void load(const Eigen::VectorXd& x);
+  // Per-state absolute tolerances (OdeSystem::tolerances), created on first use.
+  N_Vector abs_tolerances();
   void store(Eigen::VectorXd& x) const;
 
   OdeSystem& sys;
   IntegratorOptions opt;
   SUNContext ctx = nullptr;
   N_Vector y = nullptr;
+  N_Vector atol_vec = nullptr;
   SUNMatrix A = nullptr;
   SUNLinearSolver LS = nullptr;
   int mu = 0, ml = 0;
   long jac_evals = 0;
   std::string last_error;       // message captured from SUNDIALS
   std::vector<double> J;        // dense scratch for assembled Jacobians
+  std::vector<int> colptr, rowind;  // sparse pattern (klu)
   bool model_failed = false;
 
   static int rhs_cb(double t, N_Vector y, N_Vector ydot, void* user);

@@ -6,8 +6,8 @@
 #include <cstdio>
 
 #include "core/errors.hpp"
-#include "engine/wheelset_full.hpp"
-#include "engine/wheelset_lateral.hpp"
+#include "engine/strip_patches.hpp"
+#include "engine/wheelset_contact.hpp"
 
 namespace railsim::engine {
 namespace {
@@ -132,9 +132,8 @@ void finalize_model(Model& model) {
     const auto& b = model.bodies[w.body];
     GenForce F = d.force[w.body];
     F[kVert] -= b.mass * kGravity;
-    WheelContact c[2];
-    w.geometry->evaluate(0.0, c[0]);
-    w.geometry->evaluate(0.0, c[1]);
+    ContactPointGeometry c[2];
+    c[0] = c[1] = w.geometry->main_point(0.0);
     const double S = -F[kVert], D = -F[kRoll] + w.geometry->r0() * F[kLat];
     const double aL = c[0].lateral, aR = c[1].lateral;
     const double Q[2] = {(S * aR + D) / (aL + aR), (S * aL - D) / (aL + aR)};
@@ -144,12 +143,28 @@ void finalize_model(Model& model) {
                          "' has no positive static wheel load");
       w.static_load[i] = Q[i] / std::cos(c[i].contact_angle);
     }
+    // Vertical approach that carries the static load (full model), from the
+    // geometry's own load law at the centred position.
+    for (int i = 0; i < 2; ++i) {
+      if (w.geometry->distributed()) {
+        contact::StripSet s;
+        w.geometry->strips(0.0, 0.0, 1.5e-3, s);
+        StripLoads L;
+        w.static_approach[i] = strip_approach_for_load(s, Q[i], 0.0, w.geometry->contact_modulus(), L);
+        continue;
+      }
+      WheelGeometry g;
+      w.geometry->evaluate(0.0, 0.0, g);
+      double N[WheelGeometry::kMaxPoints];
+      w.static_approach[i] = share_wheel_load(g, Q[i], 0.0, w.static_load[i], w.hertz_q0[i], N);
+    }
   }
   model.finalized = true;
 }
 
 bool rhs(const Model& model, Data& d, double t, const double* x, double* xdot) {
   ++d.rhs_calls;
+  d.failed = d.derailed = false;  // a failure belongs to this evaluation only (trial steps may be rejected)
   d.t = t;
   d.V = model.speed.speed(t);
   d.s = model.speed.distance(t);
@@ -171,7 +186,7 @@ bool rhs(const Model& model, Data& d, double t, const double* x, double* xdot) {
     f[kYaw] += L.Mz;
   }
   if (model.wheelset_model == WheelsetModel::lateral)
-    for (std::size_t w = 0; w < model.wheelsets.size(); ++w) wheelset_lateral_kinematics(model, d, int(w));
+    for (std::size_t w = 0; w < model.wheelsets.size(); ++w) wheelset_kinematics(model, d, int(w));
   model.track->sample_alignment(d.s, d.reference);
   for (std::size_t b = 0; b < nb; ++b) {
     const RigidBody& body = model.bodies[b];
@@ -184,9 +199,7 @@ bool rhs(const Model& model, Data& d, double t, const double* x, double* xdot) {
   }
   element_forces(model, d, x, xdot);
   for (std::size_t w = 0; w < model.wheelsets.size(); ++w) {
-    const bool ok = model.wheelset_model == WheelsetModel::full ? wheelset_full_forces(model, d, int(w), x, xdot)
-                                                                 : wheelset_lateral_forces(model, d, int(w));
-    if (!ok) return false;
+    if (!wheelset_forces(model, d, int(w), x, xdot)) return false;
   }
   for (std::size_t b = 0; b < nb; ++b) {
     const RigidBody& body = model.bodies[b];
@@ -220,15 +233,8 @@ void rhs_or_throw(const Model& model, Data& d, double t, const double* x, double
 namespace railsim::engine {
 
 ModelOde::ModelOde(const Model& model, Data& data)
-    : model_(model), data_(data), xp_(model.n_states), fp_(model.n_states),
-      kinematic_row_(model.n_states, 0), kinematic_col_(model.n_states, -1) {
-  for (const auto& b : model.bodies)
-    for (int k = 0; k < kNumDof; ++k)
-      if (b.q_index[k] >= 0) {
-        kinematic_row_[b.q_index[k]] = 1;
-        kinematic_col_[b.q_index[k]] = b.v_index[k];
-      }
-}
+    : model_(model), data_(data), pattern_(jacobian_pattern(model)), xp_(model.n_states), fp_(model.n_states),
+      h_(model.n_states) {}
 
 bool ModelOde::rhs(double t, const double* x, double* xdot) { return engine::rhs(model_, data_, t, x, xdot); }
 
@@ -239,18 +245,59 @@ std::string ModelOde::failure_message() const {
          wheelset_model_name(model_.wheelset_model) + " wheelset model)";
 }
 
-bool ModelOde::jacobian(double t, const double* x, const double* fx, double* J) {
+void ModelOde::tolerances(const IntegratorOptions& o, double* atol) const {
+  OdeSystem::tolerances(o, atol);
+  if (!(o.atol_contact_modes > 0.0) || model_.wheelset_model != WheelsetModel::full) return;
+  for (const auto& w : model_.wheelsets) {
+    const RigidBody& b = model_.bodies[w.body];
+    for (int k : {kVert, kRoll})
+      if (b.v_index[k] >= 0) atol[b.v_index[k]] = o.atol_contact_modes;
+    if (w.beta_state >= 0) atol[w.beta_state] = o.atol_contact_modes;
+  }
+}
+
+template <class Put>
+bool ModelOde::coloured_differences(double t, const double* x, const double* fx, Put put) {
   const int n = model_.n_states;
-  std::copy(x, x + n, xp_.begin());
-  for (int j = 0; j < n; ++j) {
-    const double h = 1e-7 * std::max(1.0, std::abs(x[j])) + 1e-9;
-    xp_[j] = x[j] + h;
+  const JacobianPattern& p = pattern_;
+  for (int j = 0; j < n; ++j) h_[std::size_t(j)] = 1e-7 * std::max(1.0, std::abs(x[j])) + 1e-9;
+  for (int c = 0; c < p.colors; ++c) {
+    std::copy(x, x + n, xp_.begin());
+    bool any = false;
+    for (int j = 0; j < n; ++j)
+      if (p.color[std::size_t(j)] == c) {
+        xp_[std::size_t(j)] = x[j] + h_[std::size_t(j)];
+        any = true;
+      }
+    if (!any) continue;
     if (!engine::rhs(model_, data_, t, xp_.data(), fp_.data())) return false;
-    for (int i = 0; i < n; ++i)
-      J[i + std::size_t(j) * n] = kinematic_row_[i] ? (kinematic_col_[i] == j ? 1.0 : 0.0) : (fp_[i] - fx[i]) / h;
-    xp_[j] = x[j];
+    for (int j = 0; j < n; ++j) {
+      if (p.color[std::size_t(j)] != c) continue;
+      for (int k = p.colptr[std::size_t(j)]; k < p.colptr[std::size_t(j) + 1]; ++k) {
+        const int i = p.rowind[std::size_t(k)];
+        const double v = p.kinematic_row[std::size_t(i)] ? (p.kinematic_col[std::size_t(i)] == j ? 1.0 : 0.0)
+                                                         : (fp_[std::size_t(i)] - fx[i]) / h_[std::size_t(j)];
+        put(k, i, j, v);
+      }
+    }
   }
   return true;
+}
+
+bool ModelOde::jacobian(double t, const double* x, const double* fx, double* J) {
+  const std::size_t n = std::size_t(model_.n_states);
+  std::fill(J, J + n * n, 0.0);
+  return coloured_differences(t, x, fx, [&](int, int i, int j, double v) { J[std::size_t(i) + std::size_t(j) * n] = v; });
+}
+
+bool ModelOde::pattern(std::vector<int>& colptr, std::vector<int>& rowind) const {
+  colptr = pattern_.colptr;
+  rowind = pattern_.rowind;
+  return true;
+}
+
+bool ModelOde::sparse_jacobian(double t, const double* x, const double* fx, double* values) {
+  return coloured_differences(t, x, fx, [&](int k, int, int, double v) { values[k] = v; });
 }
 
 }  // namespace railsim::engine

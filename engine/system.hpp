@@ -35,12 +35,14 @@ void rhs_or_throw(const Model& model, Data& data, double t, const double* x, dou
 }  // namespace railsim::engine
 
 #include "engine/integrator.hpp"
+#include "engine/jacobian_pattern.hpp"
 
 namespace railsim::engine {
 
 // A Model + Data as the ODE seen by the integrators. The assembled Jacobian
 // uses the exact kinematic rows (d(dq/dt)/dv = I) and forward differences of
-// the force rows.
+// the force rows, one right-hand side per colour of the model's sparsity
+// pattern (jacobian_pattern.hpp), dense or in the pattern's CSC order.
 class ModelOde final : public OdeSystem {
  public:
   ModelOde(const Model& model, Data& data);
@@ -48,13 +50,20 @@ class ModelOde final : public OdeSystem {
   bool rhs(double t, const double* x, double* xdot) override;
   std::string failure_message() const override;
   bool jacobian(double t, const double* x, const double* fx, double* J) override;
+  void tolerances(const IntegratorOptions& options, double* atol) const override;
+  bool pattern(std::vector<int>& colptr, std::vector<int>& rowind) const override;
+  bool sparse_jacobian(double t, const double* x, const double* fx, double* values) override;
+  const JacobianPattern& sparsity() const { return pattern_; }
 
  private:
+  // Colour by colour: perturb, evaluate, and hand each column's rows to `put(k, value)`
+  // (k the nonzero's index in the pattern).
+  template <class Put>
+  bool coloured_differences(double t, const double* x, const double* fx, Put put);
   const Model& model_;
   Data& data_;
-  std::vector<double> xp_, fp_;
-  std::vector<char> kinematic_row_;  // row i is dq/dt = v (exact)
-  std::vector<int> kinematic_col_;   // its velocity column
+  JacobianPattern pattern_;
+  std::vector<double> xp_, fp_, h_;
 };
 
 }  // namespace railsim::engine

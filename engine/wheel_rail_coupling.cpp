@@ -20,7 +20,7 @@ std::unique_ptr<contact::TangentialWorkspace> WheelRailCoupling::make_workspace(
   return model_ ? model_->make_workspace() : nullptr;
 }
 
-contact::ContactForces WheelRailCoupling::forces(const WheelContact& g, double N, double N_static,
+contact::ContactForces WheelRailCoupling::forces(const ContactPointGeometry& g, double N, double N_static,
                                                  const contact::Creepages& cr_in, double V,
                                                  contact::TangentialWorkspace* ws) const {
   contact::ContactForces out;

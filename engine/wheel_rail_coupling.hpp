@@ -41,6 +41,9 @@ struct CouplingOptions {
   // Patch semi-axes at N_ref when the geometry has none (conical wheels).
   double patch_a = 0.0, patch_b = 0.0;
   bool spin = true;    // include spin creepage
+  // Full model: viscous damping of each wheel's normal approach [N s/m]
+  // (wheelset_contact.hpp); 0 = none (DYTSI).
+  double normal_damping = 0.0;
 };
 
 class WheelRailCoupling {
@@ -53,7 +56,7 @@ class WheelRailCoupling {
   std::unique_ptr<contact::TangentialWorkspace> make_workspace() const;
   // Creep forces for one contact. N: normal load [N]; N_static: static load of
   // this wheel (reference when N_ref = 0). No allocation.
-  contact::ContactForces forces(const WheelContact& g, double N, double N_static, const contact::Creepages& cr,
+  contact::ContactForces forces(const ContactPointGeometry& g, double N, double N_static, const contact::Creepages& cr,
                                 double V, contact::TangentialWorkspace* ws) const;
   std::string describe() const;
 

@@ -18,6 +18,9 @@ inline std::string data_path(const std::string& rel) { return std::string(RAILSI
 // Reference results of other programs copied into the repository with their
 // NOTICE (tests/data/reference/: CONTACT's results in contact/).
 inline std::string reference_path(const std::string& rel) { return data_path("reference/" + rel); }
+// Cache folder shared by all test processes of this build (contact tables are
+// built once and written atomically, so concurrent tests may share it).
+inline std::string cache_dir() { return RAILSIM_TEST_CACHE_DIR; }
 inline std::string source_path(const std::string& rel) { return std::string(RAILSIM_SOURCE_DIR) + "/" + rel; }
 
 // The whole content of a file (empty when it cannot be read).

@@ -32,13 +32,22 @@ double equivalent_conicity(const ContactTable& table, double amplitude, int samp
                   amplitude, g.y_min, g.y_max);
     throw InputError(buf);
   }
-  TableSample s;
+  return equivalent_conicity(
+      [&](double y) {
+        TableSample s;
+        table.lookup(std::clamp(y, g.y_min, g.y_max), s);
+        return s.wheel[0].p[0].radius - s.wheel[1].p[0].radius;
+      },
+      amplitude, samples);
+}
+
+double equivalent_conicity(const std::function<double(double)>& delta_r, double amplitude, int samples) {
+  if (!(amplitude > 0.0) || samples < 4) throw InputError("equivalent conicity: need a positive amplitude");
   double sy = 0, sd = 0, syy = 0, syd = 0;
   const double pi = std::acos(-1.0);
   for (int i = 0; i < samples; ++i) {
     const double y = amplitude * std::sin(2.0 * pi * (i + 0.5) / samples);
-    table.lookup(std::clamp(y, g.y_min, g.y_max), s);
-    const double dr = s.wheel[0].p[0].radius - s.wheel[1].p[0].radius;
+    const double dr = delta_r(y);
     sy += y;
     sd += dr;
     syy += y * y;

@@ -9,6 +9,7 @@
 // the motion spends at each y. Units: m, dimensionless conicity.
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include "contact/geometry/contact_table.hpp"
@@ -24,5 +25,7 @@ RollingRadiusCurve rolling_radius_difference(const ContactTable& table);
 
 // Equivalent conicity at amplitude A [m]; InputError when +-A leaves the table.
 double equivalent_conicity(const ContactTable& table, double amplitude, int samples = 2000);
+// The same for any rolling-radius difference Delta r(y) [m] defined on [-A, A].
+double equivalent_conicity(const std::function<double(double)>& delta_r, double amplitude, int samples = 2000);
 
 }  // namespace railsim::contact

@@ -178,6 +178,7 @@ WheelRailGeometry::LocusPoint WheelRailGeometry::locus(Side side, double s, doub
   const double Y1 = Yw * cr - Zw * sr;
   const double Z1 = Yw * sr + Zw * cr;
   LocusPoint p;
+  p.height = r * ct;
   p.x = Xw * cy - Y1 * sy;
   p.y = y + Xw * sy + Y1 * cy;
   p.z = z + Z1;
@@ -238,6 +239,7 @@ ContactPoint WheelRailGeometry::make_point(Side side, double t, double y, double
   const double ca = std::cos(setup_.inclination), sa = std::sin(setup_.inclination);
   p.y_rail = rc.y * ca - rc.z * sa;
   p.radius = setup_.r0 + c.z;
+  p.height = lp.height;
   p.angle = std::atan(-sg * slope);
   p.A = 1.0 / (2.0 * p.radius * std::sqrt(1.0 + Fs * Fs));
   p.B = 0.5 * (kr - kw);
@@ -292,6 +294,67 @@ WheelContact WheelRailGeometry::wheel_contacts(Side side, double y, double z, do
     wc.p[static_cast<std::size_t>(wc.n++)] = make_point(side, cnd.t, y, z, roll, yaw);
   }
   return wc;
+}
+
+std::vector<ContactCandidate> WheelRailGeometry::candidates(Side side, double y, double z, double roll, double yaw,
+                                                            double gap_max) const {
+  const double cr = std::cos(roll), sr = std::sin(roll), cy = std::cos(yaw), sy = std::sin(yaw);
+  const std::size_t n = samples_.size();
+  std::vector<double> g(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto& w = samples_[k];
+    g[k] = locus(side, w.s, w.F, w.Fs, y, z, cr, sr, cy, sy).gap;
+  }
+  // Local minima (merging humps lower than 10 nm: spline noise), as wheel_contacts.
+  std::vector<std::size_t> mins;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (!std::isfinite(g[k])) continue;
+    const double gl = k > 0 ? g[k - 1] : kInf;
+    const double gr = k + 1 < n ? g[k + 1] : kInf;
+    if (g[k] < gl && g[k] <= gr) mins.push_back(k);
+  }
+  constexpr double kProminence = 1e-8;
+  std::vector<std::size_t> kept;
+  for (std::size_t m : mins) {
+    if (!kept.empty()) {
+      const std::size_t a = kept.back();
+      const double peak = *std::max_element(g.begin() + static_cast<long>(a), g.begin() + static_cast<long>(m) + 1);
+      if (peak - std::max(g[a], g[m]) < kProminence) {
+        if (g[m] < g[a]) kept.back() = m;
+        continue;
+      }
+    }
+    kept.push_back(m);
+  }
+  std::vector<ContactCandidate> out;
+  if (kept.empty()) return out;
+  // Refined minima and ridges between neighbours.
+  std::vector<double> gap(kept.size()), t(kept.size()), ridge(kept.size() + 1, kInf);
+  for (std::size_t i = 0; i < kept.size(); ++i) {
+    const double gg = refine(side, kept[i], y, z, roll, yaw, t[i]);
+    if (gg > g[kept[i]]) t[i] = samples_[kept[i]].t;
+    gap[i] = std::min(gg, g[kept[i]]);
+    if (i > 0) {
+      double peak = -kInf;
+      for (std::size_t k = kept[i - 1]; k <= kept[i]; ++k)
+        if (std::isfinite(g[k])) peak = std::max(peak, g[k]);
+      ridge[i] = peak;
+    }
+  }
+  const double gmin = *std::min_element(gap.begin(), gap.end());
+  for (std::size_t i = 0; i < kept.size(); ++i) {
+    if (gap[i] - gmin > gap_max) continue;
+    ContactCandidate c;
+    c.point = make_point(side, t[i], y, z, roll, yaw);
+    c.vertical_gap = gap[i] - gmin;
+    c.point.gap = c.vertical_gap * std::cos(c.point.angle);
+    const double barrier = std::min(ridge[i], ridge[i + 1]);
+    c.depth = std::isfinite(barrier) ? std::max(0.0, barrier - gap[i]) : kInf;
+    out.push_back(c);
+  }
+  std::sort(out.begin(), out.end(),
+            [](const ContactCandidate& a, const ContactCandidate& b) { return a.point.y_wheel < b.point.y_wheel; });
+  return out;
 }
 
 void WheelRailGeometry::check_pose(double y, double yaw) const {

@@ -69,10 +69,25 @@ struct ContactPoint {
   double x = 0.0, y = 0.0, z = 0.0;  // position in the track frame [m]
   double y_wheel = 0.0;              // wheel-profile lateral coordinate (field side +) [m]
   double y_rail = 0.0;               // rail-profile lateral coordinate, file axes (field side +) [m]
-  double radius = 0.0;               // rolling radius [m]
+  double radius = 0.0;               // wheel-circle radius at the point [m]
+  double height = 0.0;               // height of the point below the axle centre, r cos(theta) [m]
+                                     // (theta: angle of the point ahead of the lowest point of its
+                                     // wheel circle, nonzero under yaw; CONTACT's rolling radius)
   double angle = 0.0;                // contact angle [rad] (see header)
   double A = 0.0, B = 0.0;           // relative curvatures [1/m]
   double gap = 0.0;                  // undeformed normal gap [m] (0 for the touching point)
+};
+
+// A local minimum of one wheel's vertical gap, with the depth of its basin:
+// the lower of the two ridges (gap maxima) that separate it from the adjacent
+// minima, minus its own gap (infinite when it is the only minimum). A basin's
+// depth falls to zero where the minimum merges with a ridge and vanishes (a
+// saddle-node of the gap function), e.g. where the touching point leaves the
+// flange root for the flank.
+struct ContactCandidate {
+  ContactPoint point;  // gap: undeformed normal gap (0 for the touching point)
+  double vertical_gap = 0.0;  // [m]
+  double depth = 0.0;         // [m], vertical
 };
 
 struct WheelContact {
@@ -111,6 +126,23 @@ class WheelRailGeometry {
   WheelsetContact at_roll(double y, double yaw, double roll) const;
   // Contacts of one wheel at a given axle height (gaps not shifted).
   WheelContact wheel_contacts(Side side, double y, double z, double roll, double yaw) const;
+  // Every local minimum of one wheel's vertical gap up to gap_max above the
+  // smallest (vertical gaps measured from the smallest), ordered along the wheel
+  // profile (increasing y_wheel). No limit on their number.
+  std::vector<ContactCandidate> candidates(Side side, double y, double z, double roll, double yaw,
+                                           double gap_max) const;
+  // The point of one wheel's contact locus at wheel-profile chord parameter t
+  // (no search): position, radius and height, the rail's normal angle and the
+  // relative curvatures there; gap = the normal gap at axle height z
+  // (vertical gap x cos(angle)). Strip-wise contact tables sample this.
+  ContactPoint point_at(Side side, double t, double y, double z, double roll, double yaw) const {
+    return make_point(side, t, y, z, roll, yaw);
+  }
+  // Range of the wheel-profile chord parameter that can touch a rail from above
+  // (the flange back face excluded) [m].
+  double wheel_t_min() const { return samples_.front().t; }
+  double wheel_t_max() const { return samples_.back().t; }
+  const Profile& wheel_profile() const { return wheel_; }
   // Minimum vertical gap of one wheel with the axle centre at height z.
   double min_gap(Side side, double y, double z, double roll, double yaw) const;
   // Gap profile around point `p` of wheel `side` at the given pose (n points over +-halfwidth).
@@ -127,7 +159,7 @@ class WheelRailGeometry {
     double t, s, F, Fs;  // chord parameter, lateral, radius increase, dF/ds
   };
   struct LocusPoint {
-    double x, y, z, gap;
+    double x, y, z, gap, height;
   };
   LocusPoint locus(Side side, double s, double F, double Fs, double y, double z, double cr, double sr, double cy,
                    double sy) const;

@@ -154,8 +154,9 @@ Scenario with_contact(const Scenario& scenario, const std::string& tangential_mo
 double linear_critical_speed(const Scenario& scenario, double v_lo, double v_hi) {
   const double lo = max_real_part(scenario.model, v_lo);
   const double hi = max_real_part(scenario.model, v_hi);
-  if (lo > 0.0) return v_lo;      // already unstable at the bottom of the range
-  if (hi <= 0.0) return kNaN;     // stable over the whole range
+  // The same threshold as the bisection: an undamped mode at rounding level is not a loss of stability.
+  if (lo > kUnstableGrowth) return v_lo;   // already unstable at the bottom of the range
+  if (hi <= kUnstableGrowth) return kNaN;  // stable over the whole range
   return critical_speed(scenario.model, v_lo, v_hi);
 }
 

@@ -46,12 +46,9 @@ RunHistory::RunHistory(const Model& model, const AccelerationOptions& options)
     const RigidBody& b = model.bodies[w.body];
     h.offset = b.position.x();
     // static_load holds the normal loads N0 = Q0 / cos(delta0); Q0 is the vertical load.
-    WheelContact c;
+    const ContactPointGeometry c = w.geometry->main_point(0.0);
     double q0 = 0.0;
-    for (int i = 0; i < 2; ++i) {
-      w.geometry->evaluate(0.0, c);
-      q0 += w.static_load[i] * std::cos(c.contact_angle);
-    }
+    for (int i = 0; i < 2; ++i) q0 += w.static_load[i] * std::cos(c.contact_angle);
     h.static_wheel_load = 0.5 * q0;
     wheelsets.push_back(std::move(h));
   }

@@ -75,14 +75,11 @@ std::vector<double> ratio(const std::vector<double>& y, const std::vector<double
 FlangeAngle flange_angle(const ContactGeometry& g, double fallback, double min_flank, int samples) {
   FlangeAngle f;
   const double lim = g.max_shift() * (1.0 - 1e-9);
-  WheelContact c;
+  WheelGeometry wg;
   for (int k = 0; k < samples; ++k) {
     const double s = -lim + 2.0 * lim * k / std::max(1, samples - 1);
-    for (int p = 0; p < g.points(); ++p) {
-      g.evaluate_point(s, p, c);
-      if (p > 0 && !(c.N0 > 0)) continue;
-      f.geometry_max = std::max(f.geometry_max, c.contact_angle);
-    }
+    g.evaluate(s, 0.0, wg);
+    for (int p = 0; p < wg.n; ++p) f.geometry_max = std::max(f.geometry_max, wg.p[p].contact_angle);
   }
   char buf[256];
   if (f.geometry_max >= min_flank) {

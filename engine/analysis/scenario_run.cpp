@@ -683,6 +683,7 @@ ScenarioRunResult run_scenario(const Scenario& sc, const ScenarioRunOptions& o) 
   results::Json choices = results::Json::object();
   choices.set("wheelset_model", wheelset_model_name(m.wheelset_model));
   choices.set("geometry", sc.geometry_description);
+  choices.set("equivalent_conicity_3mm", sc.equivalent_conicity_3mm);
   choices.set("tangential", m.coupling.describe());
   choices.set("track", m.track->describe());
   choices.set("integrator", sc.integrator.method);
@@ -708,11 +709,25 @@ ScenarioRunResult run_scenario(const Scenario& sc, const ScenarioRunOptions& o) 
                     if (o.keep_channels) out.channels.insert(out.channels.end(), row.begin(), row.end());
                     ++out.rows;
                   });
+  } catch (const DerailmentError& e) {
+    // Physics: the running safety up to the derailment, failed because of it.
+    if (csv) csv->flush();
+    summary.set("status", "derailed");
+    summary.set("derailment", e.what());
+    evaluate_history(sc, settings, history, summary, o.out_dir, e.what());  // up to the derailment: FAIL
+    summary["running_safety"].set("pass", false);
+    summary["running_safety"].set("derailment", e.what());
+    spdlog::warn("{}", e.what());
+    if (files) summary.write_file(o.out_dir + "/summary.json");
+    out.derailed = true;
+    out.derailment = e.what();
+    return out;
   } catch (const NumericalError& e) {
+    // Numerics, not physics: no running-safety verdict.
     if (csv) csv->flush();
     summary.set("status", "failed");
     summary.set("error", e.what());
-    evaluate_history(sc, settings, history, summary, o.out_dir, e.what());  // up to the failure (e.g. derailment)
+    summary.set("running_safety", "not evaluated: the run failed numerically");
     if (files) summary.write_file(o.out_dir + "/summary.json");
     throw;
   }

@@ -20,8 +20,10 @@
 // wheelset, the envelope of all wheelsets, the limits; curves, transitions and
 // defects shaded) and DIR/sum_y_rms.png (the instability rms of every
 // wheelset with its limit). A numerical failure still writes summary.json
-// (status "failed", the message; the running safety up to the failure, with
-// the verdict FAIL) and then throws the NumericalError on.
+// (status "failed", the message, no running-safety verdict: numerics are not
+// physics) and then throws the NumericalError on. A derailment
+// (DerailmentError: a wheelset past its flange) is a result: status
+// "derailed", the running safety up to it, failed, and `derailed` set.
 #pragma once
 
 #include <cstddef>
@@ -46,6 +48,8 @@ struct ScenarioRunResult {
   std::size_t rows = 0;
   results::Json summary;         // the document of summary.json
   RunSummary run;
+  bool derailed = false;         // the run ended in a derailment (physics)
+  std::string derailment;        // its message
 };
 
 // Throws InputError for a bad running_safety section (before running) or an

@@ -11,8 +11,7 @@ using namespace railsim;
 TEST_CASE("RSGEO table: values at zero shift and landmarks", "[engine][geometry]") {
   const engine::GeometryTable t(test::source_path("vehicles/contact_tables/RSGEO_S1002_UIC60_1in40.dat"));
   CHECK(t.rows() == 3402);
-  engine::WheelContact c;
-  t.evaluate(0.0, c);
+  engine::ContactPointGeometry c = t.main_point(0.0);
   CHECK(c.N0 == Approx(66661).epsilon(1e-4));
   CHECK(c.contact_angle == Approx(0.01422).epsilon(1e-3));
   CHECK(c.semi_a == Approx(5.952e-3).epsilon(1e-3));
@@ -22,9 +21,9 @@ TEST_CASE("RSGEO table: values at zero shift and landmarks", "[engine][geometry]
   CHECK(c.C11 == Approx(4.125).epsilon(1e-3));
   CHECK(c.q0 == Approx(7.011e-5).epsilon(1e-3));
   CHECK(t.r0() == Approx(0.4248829).epsilon(1e-6));
-  t.evaluate(0.005, c);
+  c = t.main_point(0.005);
   CHECK(c.rolling_radius == Approx(0.42574).epsilon(2e-5));
-  t.evaluate(0.009, c);
+  c = t.main_point(0.009);
   CHECK(c.rolling_radius == Approx(0.43961).epsilon(2e-5));
   CHECK(c.contact_angle == Approx(1.221).epsilon(2e-3));
 }

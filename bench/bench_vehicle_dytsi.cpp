@@ -1,0 +1,77 @@
+// railsim against DYTSI (the open-source DTU code, daniele-bigoni/dytsi, BDF
+// solver) on the same Cooperrider car, RSGEO table and start
+// (scenarios/cooperrider_car_dytsi.yaml: 5 mm on the leading wheelset,
+// straight perfect track, 20 s), both wheelset models, at 60 and 100 m/s
+// (decaying) and 120 and 130 m/s (hunting).
+// Counters: cpu_per_sim_s = CPU seconds of the run per simulated second;
+// vs_dytsi = DYTSI's CPU seconds per simulated second on this machine kind
+// (measured side by side: 0.68, 0.62, 2.56, 2.42 s at 60, 100, 120, 130 m/s)
+// divided by ours; steps, rhs_calls, jac = Jacobian evaluations; LL_mm and
+// LL_Hz: amplitude and frequency of the leading wheelset's lateral motion over
+// the last 5 s (DYTSI at 120 m/s: 4.36 mm, 5.80 Hz).
+#include <benchmark/benchmark.h>
+#include <yaml-cpp/yaml.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "engine/scenario.hpp"
+#include "engine/simulation.hpp"
+#include "engine/system.hpp"
+#include "results/limit_cycle.hpp"
+
+namespace {
+
+using namespace railsim;
+
+double dytsi_cpu(double V) {
+  if (V < 80) return 0.68;
+  if (V < 110) return 0.62;
+  if (V < 125) return 2.56;
+  return 2.42;
+}
+
+void cooperrider(benchmark::State& state, const char* wheelset_model) {
+  const double V = double(state.range(0));
+  const auto path = (std::filesystem::path(RAILSIM_SOURCE_DIR) / "scenarios" /
+                     "cooperrider_car_dytsi.yaml").string();
+  double cpu = 0, steps = 0, calls = 0, jac = 0, amp = 0, freq = 0;
+  for (auto _ : state) {
+    YAML::Node node = YAML::LoadFile(path);
+    node["speed"] = V;
+    node["wheelset_model"] = wheelset_model;
+    const engine::Scenario s =
+        engine::load_scenario(config::InputNode(node, path, ""), std::filesystem::path(path).parent_path().string());
+    std::vector<double> t, y;
+    const int qi = s.model.bodies[s.model.wheelsets[0].body].q_index[engine::kLat];
+    const auto r = engine::simulate(s.model, s.integrator, s.x0, s.duration, s.output_interval,
+                                    [&](double tt, const Eigen::VectorXd& x, const engine::Data&) {
+                                      if (tt >= s.duration - 5.0) {
+                                        t.push_back(tt);
+                                        y.push_back(x[qi]);
+                                      }
+                                    });
+    cpu = r.cpu_time / s.duration;
+    steps = double(r.stats.steps);
+    calls = double(r.stats.rhs_calls);
+    jac = double(r.stats.jacobian_evals);
+    const auto lc = results::settled_amplitude(t, y, 1.0);
+    amp = lc.amplitude * 1e3;
+    freq = lc.frequency;
+  }
+  state.counters["cpu_per_sim_s"] = cpu;
+  state.counters["vs_dytsi"] = dytsi_cpu(V) / cpu;
+  state.counters["steps"] = steps;
+  state.counters["rhs_calls"] = calls;
+  state.counters["jac"] = jac;
+  state.counters["LL_mm"] = amp;
+  state.counters["LL_Hz"] = freq;
+}
+
+}  // namespace
+
+BENCHMARK_CAPTURE(cooperrider, full, "full")->Arg(60)->Arg(100)->Arg(120)->Arg(130)->Unit(benchmark::kSecond)->Iterations(1);
+BENCHMARK_CAPTURE(cooperrider, lateral, "lateral")->Arg(60)->Arg(100)->Arg(120)->Arg(130)->Unit(benchmark::kSecond)->Iterations(1);
+
+BENCHMARK_MAIN();

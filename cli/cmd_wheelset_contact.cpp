@@ -1,0 +1,149 @@
+// `railsim wheelset-contact CASES.yaml --model NAME --out forces.csv`: the
+// contact of a whole wheelset at given poses (engine/analysis/
+// wheelset_contact_cases.hpp), one row per position: the total force of each
+// wheel on its rail in railsim's track frame and, per contact patch, its
+// positions on wheel and rail, rolling radius, contact angle, semi-axes,
+// normal load and creepages. CASES.yaml:
+//   wheel: S1002            # profile file (relative to CASES.yaml) or shipped name
+//   rail: UIC60
+//   inclination: 1/40       # 0 when the rail file is already inclined
+//   gauge: 1.435            # [m], measured gauge_depth below the top of rail
+//   gauge_depth: 0.014      # [m], optional
+//   flange_back: 1.360      # [m]
+//   back_face: -0.070       # [m], optional: wheel-profile y of the flange back face
+//   nominal_radius: 0.46    # [m]
+//   material: {G: 8.2e10, nu: 0.28, mu: 0.3}   # or E instead of G
+//   speed: 2.0              # [m/s]
+//   strip: 2.5e-4           # [m], optional strip width of the normal contact
+//   positions:              # y toward the left wheel [m], yaw leading end to the left [rad], Fz per wheel [N]
+//     - {y: 0.001, yaw: 0.0024, Fz: 1.0e4, roll: -1.1e-4, omega: 4.348}   # roll [rad], omega [rad/s] optional
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+#include "cli/commands.hpp"
+#include "config/yaml_input.hpp"
+#include "contact/geometry/wheel_rail_geometry.hpp"
+#include "core/errors.hpp"
+#include "engine/analysis/wheelset_contact_cases.hpp"
+#include "results/csv_writer.hpp"
+
+namespace railsim::cli {
+
+namespace {
+
+struct WheelsetContactArgs {
+  std::string cases;
+  std::string model = "chopaya";
+  std::string out = "wheelset_contact.csv";
+  int grid = 0;
+  double tolerance = 0.0;
+};
+
+constexpr int kPatchColumns = 3;  // patches per wheel written
+
+int run_wheelset_contact(const WheelsetContactArgs& a) {
+  namespace fs = std::filesystem;
+  const auto root = config::InputNode::load_file(a.cases);
+  root.allow_only({"wheel", "rail", "inclination", "gauge", "gauge_depth", "flange_back", "back_face",
+                   "nominal_radius", "material", "speed", "strip", "positions"});
+  const std::string base = fs::path(a.cases).parent_path().string();
+  engine::WheelsetContactSetup s;
+  auto profile = [&](const char* key, const std::string& fallback) {
+    if (!root.has(key)) return fallback;
+    const std::string v = root.string(key);
+    const fs::path p = fs::path(v).is_absolute() ? fs::path(v) : fs::path(base) / v;
+    return fs::exists(p) ? p.lexically_normal().string() : v;
+  };
+  s.wheel = profile("wheel", s.wheel);
+  s.rail = profile("rail", s.rail);
+  if (auto n = root.find("inclination"))
+    s.track.inclination = contact::parse_inclination(n->as_string(), n->where() + ": key 'inclination'");
+  else
+    s.track.inclination = std::atan(1.0 / 40.0);
+  if (root.has("gauge")) s.track.gauge = root.in_range("gauge", 0.9, 1.8);
+  if (root.has("gauge_depth")) s.track.gauge_depth = root.in_range("gauge_depth", 0.0, 0.03);
+  if (root.has("flange_back")) s.track.flange_back = root.in_range("flange_back", 0.8, 1.8);
+  if (root.has("back_face")) s.track.back_face = root.in_range("back_face", -0.2, 0.0);
+  if (root.has("nominal_radius")) s.track.r0 = root.in_range("nominal_radius", 0.1, 1.5);
+  if (auto m = root.find("material")) {
+    m->allow_only({"E", "G", "nu", "mu"});
+    if (m->has("E") && m->has("G")) m->fail("give E or G, not both");
+    const double nu = m->has("nu") ? m->in_range("nu", 0.0, 0.5, true, false) : s.material.nu;
+    const double mu = m->has("mu") ? m->in_range("mu", 0.0, 2.0, true) : s.material.mu;
+    if (m->has("G")) s.material = contact::Material::from_shear_modulus(m->in_range("G", 1e9, 1e12), nu, mu);
+    else s.material = {m->has("E") ? m->in_range("E", 1e9, 1e13) : s.material.E, nu, mu};
+  }
+  s.speed = root.has("speed") ? root.in_range("speed", 0.0, 200.0, true) : 1.0;
+  if (root.has("strip")) s.strip = root.in_range("strip", 2e-5, 2e-3);
+  s.model = a.model;
+  s.model_options.grid = a.grid;
+  s.model_options.tolerance = a.tolerance;
+  std::vector<engine::WheelsetContactPosition> pos;
+  for (const auto& n : root.at("positions").elements()) {
+    n.allow_only({"y", "yaw", "Fz", "roll", "omega"});
+    engine::WheelsetContactPosition p;
+    p.y = n.in_range("y", -0.03, 0.03);
+    p.yaw = n.has("yaw") ? n.in_range("yaw", -0.1, 0.1) : 0.0;
+    p.Fz = n.in_range("Fz", 0.0, 1e6, true);
+    if (n.has("roll")) {
+      p.roll = n.in_range("roll", -0.1, 0.1);
+      p.has_roll = true;
+    }
+    if (n.has("omega")) {
+      p.omega = n.in_range("omega", 0.0, 1e4, true);
+      p.has_omega = true;
+    }
+    pos.push_back(p);
+  }
+  if (pos.empty()) root.at("positions").fail("expected at least one position");
+  const auto res = engine::wheelset_contact(s, pos);
+
+  std::vector<std::string> cols = {"y", "yaw", "roll"};
+  for (const char* w : {"left", "right"})
+    for (const char* f : {"Fx", "Fy", "Fz", "patches"}) cols.push_back(std::string(w) + "_" + f);
+  const char* fields[] = {"N", "y_wheel", "y_rail", "y_track", "x_track", "rolling_radius", "contact_angle",
+                          "a", "b", "xi", "eta", "spin", "Fx_patch", "Fy_patch"};
+  for (const char* w : {"left", "right"})
+    for (int k = 1; k <= kPatchColumns; ++k)
+      for (const char* f : fields) cols.push_back(std::string(w) + std::to_string(k) + "_" + f);
+  results::CsvWriter csv(a.out, cols, false, 0, 10);
+  for (const auto& r : res) {
+    csv.cell(r.position.y).cell(r.position.yaw).cell(r.roll);
+    for (const auto& w : r.wheel) csv.cell(w.Fx).cell(w.Fy).cell(w.Fz).cell(long(w.patches.size()));
+    for (const auto& w : r.wheel)
+      for (int k = 0; k < kPatchColumns; ++k) {
+        if (k < int(w.patches.size())) {
+          const auto& p = w.patches[std::size_t(k)];
+          for (double v : {p.N, p.y_wheel, p.y_rail, p.y_track, p.x_track, p.rolling_radius, p.contact_angle, p.a, p.b,
+                           p.creep.xi, p.creep.eta, p.creep.phi, p.forces.Fx, p.forces.Fy})
+            csv.cell(v);
+        } else {
+          for (std::size_t f = 0; f < std::size(fields); ++f) csv.cell(std::nan(""));
+        }
+      }
+    csv.end_row();
+  }
+  csv.flush();
+  std::printf("wrote %s (%zu positions, model %s)\n", a.out.c_str(), res.size(), a.model.c_str());
+  return kExitSuccess;
+}
+
+}  // namespace
+
+void register_wheelset_contact(CLI::App& app, CommandRunner& run) {
+  auto a = std::make_shared<WheelsetContactArgs>();
+  auto* cmd = app.add_subcommand("wheelset-contact",
+                                 "Contact forces of a whole wheelset at given poses (profiles, yaw, loads), per wheel "
+                                 "and patch (CSV)");
+  cmd->add_option("cases", a->cases, "Cases YAML file (profiles, set-up, material, speed, positions)")->required();
+  cmd->add_option("--model", a->model, "Tangential contact model (e.g. mim, fastsim, chopaya)")->capture_default_str();
+  cmd->add_option("--out", a->out, "Output CSV file")->capture_default_str();
+  cmd->add_option("--grid", a->grid, "Elements across the minor axis (mim; 0 = model default)")
+      ->check(CLI::Range(0, 400));
+  cmd->add_option("--tolerance", a->tolerance, "Solver tolerance (mim; 0 = model default)")->check(CLI::Range(0.0, 0.1));
+  cmd->callback([a, &run] { run = [a] { return run_wheelset_contact(*a); }; });
+}
+
+}  // namespace railsim::cli

@@ -1,0 +1,161 @@
+// Wheelset-level contact for given poses; see wheelset_contact_cases.hpp.
+#include "engine/analysis/wheelset_contact_cases.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "contact/geometry/profile.hpp"
+#include "contact/geometry/strip_contact_table.hpp"
+#include "contact/hertz.hpp"
+#include "core/errors.hpp"
+#include "engine/creepages.hpp"
+#include "engine/strip_patches.hpp"
+
+namespace railsim::engine {
+
+namespace {
+
+constexpr double kStripGap = 0.6e-3;  // strips kept up to this normal gap [m] (loads stay far below)
+
+std::string num(double v) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+}  // namespace
+
+std::vector<WheelsetContactResult> wheelset_contact(const WheelsetContactSetup& s,
+                                                    const std::vector<WheelsetContactPosition>& positions) {
+  if (!(s.speed > 0.0 && std::isfinite(s.speed))) throw InputError("wheelset contact: speed must be positive");
+  if (!(s.strip >= 2e-5 && s.strip <= 2e-3))
+    throw InputError("wheelset contact: strip width " + num(s.strip) + " m: expected a value in [2e-5, 2e-3] m");
+  const contact::Profile wheel = contact::read_profile(s.wheel, contact::ProfileKind::wheel);
+  const contact::Profile rail = contact::read_profile(s.rail, contact::ProfileKind::rail);
+  s.track.validate();
+  const contact::WheelRailGeometry geo(wheel, rail, s.track);
+  auto model = contact::make_tangential_model(s.model, s.model_options);
+  auto ws = model->make_workspace();
+  const double Es = s.material.combined_modulus();
+  std::vector<WheelsetContactResult> out;
+  for (const WheelsetContactPosition& pos : positions) {
+    if (!(pos.Fz > 0.0 && std::isfinite(pos.Fz)))
+      throw InputError("wheelset contact: position y = " + num(pos.y) + " m: Fz must be positive (got " + num(pos.Fz) + ")");
+    WheelsetContactResult r;
+    r.position = pos;
+    const contact::WheelsetContact c = pos.has_roll ? geo.at_roll(pos.y, pos.yaw, pos.roll) : geo.solve(pos.y, pos.yaw);
+    r.roll = c.roll;
+    for (int i = 0; i < 2; ++i) {
+      const contact::Side side = i == 0 ? contact::Side::left : contact::Side::right;
+      const double sg = i == 0 ? 1.0 : -1.0;
+      // Strips of this wheel at its touching height (engine sign of the angle:
+      // > 0 tilts the normal toward the track centre).
+      contact::StripSet set;
+      set.width = s.strip;
+      int index = 0;
+      for (double t = geo.wheel_t_min(); t <= geo.wheel_t_max(); t += s.strip, ++index) {
+        const contact::ContactPoint p = geo.point_at(side, t, pos.y, c.z[std::size_t(i)], c.roll, pos.yaw);
+        if (!(std::isfinite(p.gap) && p.gap < kStripGap)) continue;
+        if (set.n == contact::StripSet::kMax)
+          throw InputError("wheelset contact: more than " + std::to_string(contact::StripSet::kMax) +
+                           " strips near the contact at y = " + num(pos.y) + " m: use a wider strip (option strip)");
+        contact::StripPoint& q = set.s[set.n++];
+        q.index = index;
+        q.gap = std::max(0.0, p.gap);
+        q.angle = sg * p.angle;
+        q.lateral = sg * (p.y - pos.y);
+        q.lead = p.x * std::cos(pos.yaw) + (p.y - pos.y) * std::sin(pos.yaw);  // wheelset frame
+        q.height = p.height;
+        q.A = p.A;
+        q.f = contact::StripContactTable::winkler_factor(p.B / p.A);
+        q.y_wheel = p.y_wheel;
+      }
+      if (set.n == 0)
+        throw InputError("wheelset contact: y = " + num(pos.y) + " m, yaw = " + num(pos.yaw) + " rad: the " +
+                         (i == 0 ? "left" : "right") + " wheel does not meet its rail");
+      // The wheelset rolling steadily (no rates).
+      WheelsetKinematics k;
+      k.V = s.speed;
+      k.Omega = pos.has_omega ? pos.omega : s.speed / s.track.r0;
+      k.y = pos.y;
+      k.psi = pos.yaw;
+      k.phi = c.roll;
+      // The wheel's patches, creep forces and total force on the rail when the
+      // normal loads' vertical components add up to Qn.
+      auto wheel_forces = [&](double Qn, WheelsetContactWheel& W) {
+        StripLoads L;
+        W = WheelsetContactWheel{};
+        W.approach = strip_approach_for_load(set, Qn, 0.0, Es, L);
+        double X = 0, Y = 0, Z = 0;
+        for (int p = 0; p < L.n; ++p) {
+          WheelsetContactPatch P;
+          ContactPointGeometry g = L.patch[p];
+          P.N = L.N[p];
+          P.contact_angle = g.contact_angle;
+          P.rolling_radius = g.rolling_radius;
+          P.a = g.semi_a;
+          P.b = g.semi_b;
+          P.y_track = pos.y + sg * g.lateral;
+          P.x_track = g.lead * std::cos(pos.yaw) - sg * g.lateral * std::sin(pos.yaw);  // back to the track frame
+          // The profile positions of the patch centre: the strip nearest to its lateral position.
+          double best = 1e9;
+          for (int j = 0; j < set.n; ++j)
+            if (std::abs(set.s[j].lateral - g.lateral) < best) {
+              best = std::abs(set.s[j].lateral - g.lateral);
+              P.y_wheel = set.s[j].y_wheel;
+            }
+          P.y_rail = sg * P.y_track - geo.rail_offset();  // placed (inclined) rail profile, field side positive
+          P.creep = wheel_creepages(k, g, int(sg));
+          contact::ContactInput in;
+          if (P.a > 0 && P.b > 0) in.patch = contact::hertz_from_semi_axes(P.a, P.b, P.N, s.material);
+          in.patch.Fz = P.N;
+          in.creep = P.creep;
+          in.material = s.material;
+          in.rolling_speed = s.speed;
+          P.forces = model->solve(in, ws.get());
+          const double ct = std::cos(g.contact_angle), st = std::sin(g.contact_angle);
+          X += P.forces.Fx - P.forces.Fy * pos.yaw * ct;
+          Y += P.forces.Fx * pos.yaw + P.forces.Fy * ct - sg * P.N * st;
+          Z += sg * P.forces.Fy * st + P.N * ct;
+          W.patches.push_back(P);
+        }
+        W.Fx = -X;  // the wheel on the rail
+        W.Fy = -Y;
+        W.Fz = -Z;
+      };
+      // The prescribed Fz is the wheel's total vertical force, creep forces
+      // included (as in CONTACT's wheelset problems): in flange contact the
+      // lateral creep force carries a large part of it (mu tan(delta) of the
+      // normal part at 66 deg), so the normal part is found by the secant
+      // method on Z(Qn) - Fz, from Qn = Fz.
+      WheelsetContactWheel& W = r.wheel[i];
+      double q0 = pos.Fz;
+      wheel_forces(q0, W);
+      double g0 = -W.Fz - pos.Fz;
+      double q1 = std::max(0.05 * pos.Fz, pos.Fz - g0);
+      bool converged = std::abs(g0) <= 1e-9 * pos.Fz;
+      for (int it = 0; it < 50 && !converged; ++it) {
+        wheel_forces(q1, W);
+        const double g1 = -W.Fz - pos.Fz;
+        if (std::abs(g1) <= 1e-9 * pos.Fz) {
+          converged = true;
+          break;
+        }
+        double q2 = (g1 != g0) ? q1 - g1 * (q1 - q0) / (g1 - g0) : q1 - g1;
+        q2 = std::clamp(q2, 0.5 * q1, 2.0 * q1);  // keep the normal part positive and the step bounded
+        q0 = q1;
+        g0 = g1;
+        q1 = q2;
+      }
+      if (!converged)
+        throw NumericalError("wheelset contact: y = " + num(pos.y) + " m, yaw = " + num(pos.yaw) + " rad: the " +
+                             (i == 0 ? "left" : "right") + " wheel's vertical force " + num(pos.Fz) +
+                             " N is not reached (the creep forces carry it off, mu tan(delta) near 1?)");
+    }
+    out.push_back(std::move(r));
+  }
+  return out;
+}
+
+}  // namespace railsim::engine

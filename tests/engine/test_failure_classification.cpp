@@ -1,0 +1,67 @@
+// Numerical failure is not derailment (issue 14): a wheelset that climbs past
+// its flange is a derailment (physics: status "derailed", running safety
+// FAIL, exit 0 with the verdict); a run stopped by the integrator or by a
+// state no physics reaches (a wheelset beyond a flangeless geometry's range,
+// an explicit method on the stiff contact) is a numerical failure (exit 3,
+// time, place, model, last step) with no running-safety verdict.
+#include <catch2/catch.hpp>
+
+#include <string>
+
+#include "json_support.hpp"
+#include "test_support.hpp"
+
+using namespace railsim;
+
+TEST_CASE("a wheel climbing its flange is reported as a derailment, with the running safety failed",
+          "[engine][cli][derailment]") {
+  const std::string out = test::temp_dir("flange_climb");
+  const auto r = test::run_railsim("run " + test::data_path("engine/flange_climb.yaml") + " --out " + out);
+  INFO(r.output);
+  CHECK(r.exit_code == 0);
+  const auto js = test::read_json(out + "/summary.json");
+  CHECK(js["status"] == "derailed");
+  const std::string what = js["derailment"].get<std::string>();
+  CHECK(what.find("climbed past its flange") != std::string::npos);
+  CHECK(what.find("ws1") != std::string::npos);
+  CHECK(what.find("t = ") != std::string::npos);
+  CHECK(what.find("lateral wheelset") != std::string::npos);
+  CHECK(js["running_safety"]["pass"] == false);
+  // Before it left the rail the wheel was above Nadal's limit (mu 0.5, 69.4 deg: 0.93).
+  const auto& yq = js["running_safety"]["wheelsets"][0]["wheels"]["right"]["yq_instantaneous"];
+  CHECK(yq["max"].get<double>() > yq["nadal_limit"].get<double>());
+  CHECK(yq["nadal_limit"].get<double>() == Approx(0.93).margin(0.02));
+}
+
+TEST_CASE("the same scene stopped by the integrator is a numerical failure, with no verdict",
+          "[engine][cli][derailment]") {
+  // An absurd step budget (20 steps per output interval of 0.5 s with steps of
+  // at most 2 ms): the integrator stops at its first output, long before the defect.
+  const std::string out = test::temp_dir("flange_climb_explicit");
+  const auto r = test::run_railsim("run " + test::data_path("engine/flange_climb.yaml") + " --out " + out +
+                                   " --set output_interval=0.5 --set integrator.max_steps=20");
+  INFO(r.output);
+  CHECK(r.exit_code == 3);
+  const auto js = test::read_json(out + "/summary.json");
+  CHECK(js["status"] == "failed");
+  CHECK(js["running_safety"].is_string());  // "not evaluated: the run failed numerically"
+  CHECK(js["running_safety"].get<std::string>().find("not evaluated") != std::string::npos);
+  CHECK(!js.contains("derailment"));
+  const std::string err = js["error"].get<std::string>();
+  CHECK(err.find("t = ") != std::string::npos);
+  CHECK(err.find("last step") != std::string::npos);
+}
+
+TEST_CASE("a wheelset beyond a flangeless geometry's range is a numerical failure, not a derailment",
+          "[engine][cli][derailment]") {
+  // Conical wheels (no flange) above the critical speed: the oscillation grows
+  // until the wheelset leaves the 5 mm range.
+  const std::string out = test::temp_dir("unstable_conical");
+  const auto r = test::run_railsim("run " + test::data_path("engine/unstable_scenario.yaml") + " --out " + out);
+  INFO(r.output);
+  CHECK(r.exit_code == 3);
+  const auto js = test::read_json(out + "/summary.json");
+  CHECK(js["status"] == "failed");
+  CHECK(js["running_safety"].is_string());
+  CHECK(js["error"].get<std::string>().find("not a derailment") != std::string::npos);
+}
