@@ -45,7 +45,7 @@
 namespace railsim::contact {
 
 // Solver identity written into tables; bump when the MIM solver's results change.
-inline constexpr const char* kMimTableSolverId = "railsim-mim-steady-hertz-1";
+inline constexpr const char* kMimTableSolverId = "railsim-mim-steady-hertz-2";
 inline constexpr std::uint32_t kMimTableFormatVersion = 1;
 
 struct MimTableSpec {
