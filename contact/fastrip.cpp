@@ -55,7 +55,7 @@ Fastrip::Fastrip(const FastripOptions& options)
   l3_scale_ = s3 * par / (kPi / 2.0);
 }
 
-ContactForces Fastrip::solve(const ContactInput& in, TangentialWorkspace* /*ws*/) const {
+ContactForces Fastrip::compute(const ContactInput& in, TangentialWorkspace* /*ws*/) const {
   ContactForces out;
   if (!check_tangential_input(in, "fastrip")) {
     out.stick_fraction = 1.0;

@@ -101,7 +101,7 @@ class Fastrip final : public TangentialModel {
  public:
   explicit Fastrip(const FastripOptions& options = {});
   std::string_view name() const override { return "fastrip"; }
-  ContactForces solve(const ContactInput& in, TangentialWorkspace* ws = nullptr) const override;
+  ContactForces compute(const ContactInput& in, TangentialWorkspace* ws) const override;
   const FastripOptions& options() const { return options_; }
 
  private:

@@ -119,7 +119,7 @@ Fastsim::Fastsim(const FastsimOptions& options)
   load_scale_ = exact / load;
 }
 
-ContactForces Fastsim::solve(const ContactInput& in, TangentialWorkspace* /*ws*/) const {
+ContactForces Fastsim::compute(const ContactInput& in, TangentialWorkspace* /*ws*/) const {
   ContactForces out;
   if (!check_tangential_input(in, "fastsim")) {
     out.stick_fraction = 1.0;

@@ -89,7 +89,7 @@ class Fastsim final : public TangentialModel {
  public:
   explicit Fastsim(const FastsimOptions& options = {});
   std::string_view name() const override { return "fastsim"; }
-  ContactForces solve(const ContactInput& in, TangentialWorkspace* ws = nullptr) const override;
+  ContactForces compute(const ContactInput& in, TangentialWorkspace* ws) const override;
   const FastsimOptions& options() const { return options_; }
 
  private:

@@ -444,7 +444,7 @@ void MimTable::lookup(double aob, double xi_n, double eta_n, double psi_n, doubl
   out[2] = f2;
 }
 
-ContactForces MimTableModel::solve(const ContactInput& in, TangentialWorkspace* /*ws*/) const {
+ContactForces MimTableModel::compute(const ContactInput& in, TangentialWorkspace* /*ws*/) const {
   ContactForces f;
   if (!check_tangential_input(in, "mim_table") || in.material.mu == 0.0) return f;
   const MimTableSpec& s = table_->spec();

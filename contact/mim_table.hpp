@@ -113,7 +113,7 @@ class MimTableModel final : public TangentialModel {
  public:
   explicit MimTableModel(std::shared_ptr<const MimTable> table) : table_(std::move(table)) {}
   std::string_view name() const override { return "mim_table"; }
-  ContactForces solve(const ContactInput& in, TangentialWorkspace* ws = nullptr) const override;
+  ContactForces compute(const ContactInput& in, TangentialWorkspace* ws) const override;
   const MimTable& table() const { return *table_; }
 
  private:

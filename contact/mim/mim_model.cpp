@@ -206,7 +206,7 @@ class MimModel final : public TangentialModel {
   std::unique_ptr<TangentialWorkspace> make_workspace() const override {
     return std::make_unique<MimWorkspace>(opt_);
   }
-  ContactForces solve(const ContactInput& in, TangentialWorkspace* ws) const override {
+  ContactForces compute(const ContactInput& in, TangentialWorkspace* ws) const override {
     std::unique_ptr<MimWorkspace> local;
     auto* w = dynamic_cast<MimWorkspace*>(ws);
     if (!w) {
