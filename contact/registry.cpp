@@ -15,6 +15,8 @@ std::unique_ptr<TangentialModel> make_she(const TangentialModelOptions&);
 std::unique_ptr<TangentialModel> make_chopaya(const TangentialModelOptions&);
 std::unique_ptr<TangentialModel> make_polach(const TangentialModelOptions&);
 std::unique_ptr<TangentialModel> make_fastsim(const TangentialModelOptions&);
+std::unique_ptr<TangentialModel> make_fastsim_kalker(const TangentialModelOptions&);
+std::unique_ptr<TangentialModel> make_fastsim_parabolic(const TangentialModelOptions&);
 std::unique_ptr<TangentialModel> make_fastrip(const TangentialModelOptions&);
 std::unique_ptr<TangentialModel> make_mim(const TangentialModelOptions&);
 std::unique_ptr<TangentialModel> make_mim_table(const TangentialModelOptions&);
@@ -28,7 +30,12 @@ const std::vector<TangentialModelEntry>& tangential_models() {
       {"she", "Shen-Hedrick-Elkins cubic saturation incl. linear spin term", &make_she},
       {"chopaya", "exponential saturation with spin via reduced creepage (reconstruction of CHOPAYA)", &make_chopaya},
       {"polach", "Polach (1999/2005) with spin; kA = kS = 1, constant friction by default", &make_polach},
-      {"fastsim", "Kalker's FASTSIM (simplified theory), elliptic traction bound, grid N x N (default 20)", &make_fastsim},
+      {"fastsim", "FASTSIM as CONTACT distributes it: Kalker's flexibilities blended towards one at large "
+                  "creepage (Vollebregt & Voltr 2023), elliptic bound, grid N x N (default 20)", &make_fastsim},
+      {"fastsim_kalker", "FASTSIM with Kalker's three flexibilities L1, L2, L3 (no blending), elliptic bound, "
+                         "grid N x N (default 20)", &make_fastsim_kalker},
+      {"fastsim_parabolic", "Kalker's original FASTSIM (1982): three flexibilities, parabolic bound, grid N x N "
+                            "(default 20)", &make_fastsim_parabolic},
       {"fastrip", "FaStrip-type: strip theory per strip + FASTSIM-like spin, grid N x N (default 20)", &make_fastrip},
       {"mim", "exact boundary-element steady rolling (Kalker's MIM, FFT), grid N across minor axis (default 40)", &make_mim},
       {"mim_table", "exact MIM results tabulated over a/b and normalised creepages/spin (USETAB-like), cubic "

@@ -77,7 +77,7 @@ TEST_CASE("compare-contact: errors against MIM within the known bounds, files wr
   }
   // Every registered model ran on every case (mim_table: no cached table here).
   for (const char* m : {"linear", "linear_sat", "vermeulen_johnson", "she", "chopaya", "polach", "fastsim",
-                        "fastrip", "mim"})
+                        "fastsim_kalker", "fastsim_parabolic", "fastrip", "mim"})
     CHECK(rows_per_model[m] == 7);
   CHECK(rows_per_model.count("mim_table") == 0);
   CHECK(fastsim_pure_max <= 10.0);
@@ -95,7 +95,7 @@ TEST_CASE("compare-contact: errors against MIM within the known bounds, files wr
   CHECK(on_front >= 1);
   CHECK(summary.contains("failure_map"));
   const auto map = railsim::results::read_csv(out + "/failure_map.csv");
-  CHECK(map.rows.size() == 9 * 16);
+  CHECK(map.rows.size() == 11 * 16);  // every model but mim_table on the 16 states of the map
 }
 
 TEST_CASE("compare-contact: bad input exits 2 naming file, line, key or option", "[cli][compare_contact][errors]") {
