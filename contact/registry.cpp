@@ -39,7 +39,7 @@ const std::vector<TangentialModelEntry>& tangential_models() {
       {"fastrip", "FaStrip-type: strip theory per strip + FASTSIM-like spin, grid N x N (default 20)", &make_fastrip},
       {"mim", "exact boundary-element steady rolling (Kalker's MIM, FFT), grid N across minor axis (default 40)", &make_mim},
       {"mim_table", "exact MIM results tabulated over a/b and normalised creepages/spin (USETAB-like), cubic "
-                    "interpolation; the table is built once (13,851 solves) and cached",
+                    "interpolation; the table is built once (56,277 solves) and cached",
        &make_mim_table, true},
   };
   return table;
