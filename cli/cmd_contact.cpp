@@ -2,7 +2,7 @@
 // [--grid N] [--tolerance T] [--no-timing]`:
 // runs one tangential contact model on every case of a case file (format in
 // support_contact_cases.hpp) and writes one CSV row per case with the patch,
-// the forces, the validity flag and the measured cost per call
+// the forces, the validity flag (and why) and the measured cost per call
 // (--no-timing: each case solved once, time_ns written as 0; for long
 // reference runs such as tests/data/contact/spin_reference/).
 #include <spdlog/spdlog.h>
@@ -32,7 +32,12 @@ struct ContactOptions {
 
 int run_contact(const ContactOptions& o) {
   bool known = false;
-  for (const auto& e : contact::tangential_models()) known = known || o.model == e.name;
+  const char* spin = "";
+  for (const auto& e : contact::tangential_models())
+    if (o.model == e.name) {
+      known = true;
+      spin = e.spin;
+    }
   if (!known)
     throw InputError("--model: unknown contact model '" + o.model + "' (known models: " +
                      contact::tangential_model_names() + ")");
@@ -62,6 +67,7 @@ int run_contact(const ContactOptions& o) {
   }
   spdlog::info("{} cases with model {} (reduction {}): {} flagged invalid; results in {}", set.cases.size(),
                o.model, contact::describe_reduction(set.reduction), invalid, o.out);
+  spdlog::info("{} and spin: {}", o.model, spin);
   return 0;
 }
 
