@@ -462,7 +462,7 @@ void register_compare_contact(CLI::App& app, CommandRunner& run) {
                   "Reduction of Kalker's coefficients (overrides the file): none, elastic_fe, elastoplastic_fe, "
                   "third_body, one number k, or k11,k22,k23");
   cmd->add_flag("--with-mim-table", a->with_mim_table,
-                "Include mim_table, building its table when it is not cached (13,851 MIM solves)");
+                "Include mim_table, building its table when it is not cached (56,277 MIM solves)");
   cmd->add_option("--cache-dir", a->cache_dir,
                   "mim_table cache folder (default $RAILSIM_CACHE_DIR, $XDG_CACHE_HOME/railsim or ~/.cache/railsim)");
   cmd->callback([a, &run] { run = [a] { return run_compare_contact(*a); }; });

@@ -1,7 +1,10 @@
-// `railsim contact CASES.yaml --model NAME --out results.csv [--reduction R]`:
+// `railsim contact CASES.yaml --model NAME --out results.csv [--reduction R]
+// [--grid N] [--tolerance T] [--no-timing]`:
 // runs one tangential contact model on every case of a case file (format in
 // support_contact_cases.hpp) and writes one CSV row per case with the patch,
-// the forces, the validity flag and the measured cost per call.
+// the forces, the validity flag (and why) and the measured cost per call
+// (--no-timing: each case solved once, time_ns written as 0; for long
+// reference runs such as tests/data/contact/spin_reference/).
 #include <spdlog/spdlog.h>
 
 #include <string>
@@ -24,11 +27,17 @@ struct ContactOptions {
   int grid = 0;
   double tolerance = 0.0;
   std::string cache_dir;
+  bool no_timing = false;
 };
 
 int run_contact(const ContactOptions& o) {
   bool known = false;
-  for (const auto& e : contact::tangential_models()) known = known || o.model == e.name;
+  const char* spin = "";
+  for (const auto& e : contact::tangential_models())
+    if (o.model == e.name) {
+      known = true;
+      spin = e.spin;
+    }
   if (!known)
     throw InputError("--model: unknown contact model '" + o.model + "' (known models: " +
                      contact::tangential_model_names() + ")");
@@ -45,7 +54,11 @@ int run_contact(const ContactOptions& o) {
   results::CsvWriter csv(o.out, contact_csv_columns(), false, 1, 17);
   int invalid = 0;
   for (const auto& c : set.cases) {
-    const TimedForces r = solve_timed(*model, c.input, ws.get());
+    TimedForces r;
+    if (o.no_timing)
+      r.forces = model->solve(c.input, ws.get());
+    else
+      r = solve_timed(*model, c.input, ws.get());
     if (!r.forces.valid) {
       ++invalid;
       spdlog::warn("case '{}': {} outside its validity domain: {}", c.id, o.model, r.forces.reason);
@@ -54,6 +67,7 @@ int run_contact(const ContactOptions& o) {
   }
   spdlog::info("{} cases with model {} (reduction {}): {} flagged invalid; results in {}", set.cases.size(),
                o.model, contact::describe_reduction(set.reduction), invalid, o.out);
+  spdlog::info("{} and spin: {}", o.model, spin);
   return 0;
 }
 
@@ -75,6 +89,8 @@ void register_contact(CLI::App& app, CommandRunner& run) {
   cmd->add_option("--cache-dir", opts->cache_dir,
                   "Table cache folder of cached-table models (mim_table; default $RAILSIM_CACHE_DIR, "
                   "$XDG_CACHE_HOME/railsim or ~/.cache/railsim)");
+  cmd->add_flag("--no-timing", opts->no_timing,
+                "Solve each case once and write time_ns = 0 (no repeated calls to measure the cost)");
   cmd->callback([&run, opts] { run = [opts] { return run_contact(*opts); }; });
 }
 

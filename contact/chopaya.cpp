@@ -29,7 +29,7 @@ namespace {
 class Chopaya final : public TangentialModel {
  public:
   std::string_view name() const override { return "chopaya"; }
-  ContactForces solve(const ContactInput& in, TangentialWorkspace*) const override {
+  ContactForces compute(const ContactInput& in, TangentialWorkspace*) const override {
     const LinearCoefficients f = linear_coefficients(in);
     // The reduced creepages in force units are exactly the linear forces
     // (f22 eta* = f22 eta + f23 phi), so saturate those.

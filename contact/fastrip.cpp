@@ -55,7 +55,7 @@ Fastrip::Fastrip(const FastripOptions& options)
   l3_scale_ = s3 * par / (kPi / 2.0);
 }
 
-ContactForces Fastrip::solve(const ContactInput& in, TangentialWorkspace* /*ws*/) const {
+ContactForces Fastrip::compute(const ContactInput& in, TangentialWorkspace* /*ws*/) const {
   ContactForces out;
   if (!check_tangential_input(in, "fastrip")) {
     out.stick_fraction = 1.0;
@@ -79,11 +79,21 @@ ContactForces Fastrip::solve(const ContactInput& in, TangentialWorkspace* /*ws*/
   const double W = std::hypot(wx, wy);
   const double ex = W > 0.0 ? -wx / W : 0.0;  // direction of the strip-theory traction
   const double ey = W > 0.0 ? -wy / W : 0.0;
-  // Creepage pull in the strips' slip zones (FASTSIM's flexibilities L1, L2,
-  // Kalker 1982): keeps the traction there along the total rigid slip when spin
-  // is added (see the header, step 4).
-  const double cx = in.creep.xi * 3.0 * G * C.C11 * k.k11 / (8.0 * a);
-  const double cy = in.creep.eta * 3.0 * G * C.C22 * k.k22 / (8.0 * a);
+  // Sliding strips (header, step 4): the rigid slip that is uniform along a
+  // strip, (xi - phi y_j, eta), pulls with one flexibility Lu = sqrt(L1 L2)
+  // (Kalker's L1 = 8a/(3 G C11 k11), L2 = 8a/(3 G C22 k22)), so that the
+  // traction turns towards the direction of that slip; the lateral spin slip
+  // phi x, which varies along the strip, keeps the spin flexibility L3.
+  const double Lu = 8.0 * a / (3.0 * G * std::sqrt(C.C11 * k.k11 * C.C22 * k.k22));
+  const double ux = in.creep.xi / Lu, uy = in.creep.eta / Lu, upx = in.creep.phi / Lu;
+  const double creep_norm = std::hypot(in.creep.xi, in.creep.eta);
+  // Longitudinal spin slip -phi y_j of a sliding strip: with Lu when creepage
+  // is present, with L3 (FASTSIM) for pure spin; blended by
+  // om = |(xi, eta)| / (0.1 |phi| c) in [0, 1] so the force is continuous.
+  const double om = in.creep.phi != 0.0
+                        ? std::min(1.0, creep_norm / (0.1 * std::abs(in.creep.phi) * std::sqrt(a * b)))
+                        : 1.0;
+  const double upxw = om * upx + (1.0 - om) * in.creep.phi / L3;
   const double spy = in.creep.phi / L3;   // lateral spin slip / L3 per metre of x
   const double spx = in.creep.phi / L3;   // longitudinal spin slip / L3 per metre of y
 
@@ -102,9 +112,16 @@ ContactForces Fastrip::solve(const ContactInput& in, TangentialWorkspace* /*ws*/
       ar = aj - d;
     }
     const double qs = gj / aj;  // mu p0_j / a_j
-    const double sgx = spx * y;  // longitudinal spin slip rate on this strip
+    const double sgx = spx * y;        // longitudinal spin slip rate on this strip (adhesion, L3)
+    const double pgx = ux - upxw * y;  // (xi - phi y_j) / Lu: uniform pull of a sliding strip
+    // The strip slides behind x_s (step 4): Carter's slip point d - a' when
+    // spin matters on this strip, nowhere (the trailing edge) without spin,
+    // blended by chi = |phi| |(a_j, y_j)| / (0.25 |(xi, eta)|) in [0, 1].
+    const double chi =
+        creep_norm > 0.0 ? std::min(1.0, std::abs(in.creep.phi) * std::hypot(aj, y) / (0.25 * creep_norm)) : 1.0;
+    const double xs = chi * (d - ar) - (1.0 - chi) * aj;
     double sx = 0.0, sy = 0.0, xprev = aj, qprev = 0.0;
-    bool slides = false;  // the total traction has reached the bound ahead on this strip
+    bool slides = false;  // the strip slides from here on (bound reached, or Carter slip zone)
     double fx = 0.0, fy = 0.0, mz = 0.0, adh = 0.0;
     // Adhesion-ellipse integrals at the upper boundary of the current element
     // (the leading edge x = a_j sits at u = +ar); reused element to element.
@@ -137,15 +154,18 @@ ContactForces Fastrip::solve(const ContactInput& in, TangentialWorkspace* /*ws*/
         M *= qs;
         q = qs * (aj * sqc_[kk] - qa);
       }
-      // Spin, FASTSIM-like (step 4), on top of the strip traction; then the bound.
-      sx += sgx * dx;
-      sy -= spy * xm * dx;
+      // Carter's slip zone of the strip's creepage: the strip slides from here
+      // on even if spin keeps the total traction below the bound (step 4).
+      if (W > 0.0 && x < xs) slides = true;
       if (slides) {
-        // Behind the first point where the total traction reached the bound the
-        // strip slides: no more strip-theory increments, the creepage pulls as in
-        // FASTSIM (step 4). Without spin this never happens (q <= mu p).
-        sx -= (q - qprev) * ex + cx * dx;
-        sy -= (q - qprev) * ey + cy * dx;
+        // Sliding strip: no more strip-theory increments (cancelled in s); the
+        // total traction is marched as in FASTSIM (step 4).
+        sx -= (q - qprev) * ex + pgx * dx;
+        sy -= (q - qprev) * ey + (uy + spy * xm) * dx;
+      } else {
+        // Spin, FASTSIM-like (step 4), on top of the strip traction.
+        sx += sgx * dx;
+        sy -= spy * xm * dx;
       }
       qprev = q;
       double tx = q * ex + sx, ty = q * ey + sy;

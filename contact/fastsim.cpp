@@ -1,6 +1,7 @@
 // FASTSIM (Kalker 1982); see fastsim.hpp for equations, units and signs.
 #include "contact/fastsim.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -72,6 +73,33 @@ StripGrid StripGrid::make(int nx, int ny, GridSpacing spacing_x, GridSpacing spa
   return g;
 }
 
+void blend_flexibilities(const ContactInput& in, const KalkerCoefficients& C, double& L1, double& L2, double& L3) {
+  const double a = in.patch.a, b = in.patch.b, c = std::sqrt(a * b);
+  const double G = in.material.shear_modulus();
+  const ReductionFactors& k = in.reduction;
+  const double xi = in.creep.xi, eta = in.creep.eta, phi = in.creep.phi;
+  // Combined flexibility: creepage-weighted harmonic mean, spin as the
+  // equivalent creepage phi (3 pi a / 32) (the ratio of the spin and creepage
+  // moments of FASTSIM's no-slip traction, pi a^2/4 over 8 a/3).
+  const double ph = phi * 3.0 * kPi * a / 32.0;
+  const double num = xi * xi + eta * eta + ph * ph;
+  const double den = xi * xi / L1 + eta * eta / L2 + ph * ph / L3;
+  if (!(num > 0.0) || !(den > 0.0)) return;
+  const double L = num / den;
+  // Blending weight: creepage over the saturation creepage, 0 -> 1 at 3 times it.
+  // The saturation creepages are mu Fz / (G c^2 C11), mu Fz / (G c^2 C22),
+  // mu Fz / (G c^3 C23); CONTACT adds spin to xi and eta in rad/mm, so spin
+  // enters with the length unit 1 mm here too.
+  const double muN = in.material.mu * in.patch.Fz;
+  const double sx = muN / (G * c * c * C.C11 * k.k11), sy = muN / (G * c * c * C.C22 * k.k22);
+  const double sp = 1e-3 * muN / (G * c * c * c * C.C23 * k.k23);
+  const double f = std::sqrt((xi * xi + eta * eta + 1e-6 * phi * phi) / (sx * sx + sy * sy + sp * sp));
+  const double w = std::clamp(f / 3.0, 0.0, 1.0);
+  L1 = (1.0 - w) * L1 + w * L;
+  L2 = (1.0 - w) * L2 + w * L;
+  L3 = (1.0 - w) * L3 + w * L;
+}
+
 bool check_tangential_input(const ContactInput& in, const char* model) {
   const HertzPatch& p = in.patch;
   const auto bad = [&](const std::string& what) {
@@ -95,8 +123,8 @@ bool check_tangential_input(const ContactInput& in, const char* model) {
   return true;
 }
 
-Fastsim::Fastsim(const FastsimOptions& options)
-    : options_(options), grid_(StripGrid::make(options.nx, options.ny, options.spacing_x, options.spacing_y)) {
+Fastsim::Fastsim(const FastsimOptions& options, const char* name)
+    : options_(options), name_(name), grid_(StripGrid::make(options.nx, options.ny, options.spacing_x, options.spacing_y)) {
   const auto nx = static_cast<std::size_t>(grid_.nx);
   const auto ny = static_cast<std::size_t>(grid_.ny);
   bound_shape_.resize(ny * nx);
@@ -119,9 +147,9 @@ Fastsim::Fastsim(const FastsimOptions& options)
   load_scale_ = exact / load;
 }
 
-ContactForces Fastsim::solve(const ContactInput& in, TangentialWorkspace* /*ws*/) const {
+ContactForces Fastsim::compute(const ContactInput& in, TangentialWorkspace* /*ws*/) const {
   ContactForces out;
-  if (!check_tangential_input(in, "fastsim")) {
+  if (!check_tangential_input(in, name_)) {
     out.stick_fraction = 1.0;
     return out;
   }
@@ -130,9 +158,10 @@ ContactForces Fastsim::solve(const ContactInput& in, TangentialWorkspace* /*ws*/
   const double Fz = in.patch.Fz;
   const double G = in.material.shear_modulus();
   const KalkerCoefficients C = kalker_coefficients(a / b, in.material.nu);
-  const double L1 = 8.0 * a / (3.0 * G * C.C11 * in.reduction.k11);
-  const double L2 = 8.0 * a / (3.0 * G * C.C22 * in.reduction.k22);
-  const double L3 = kPi * a * std::sqrt(a / b) / (4.0 * G * C.C23 * in.reduction.k23);
+  double L1 = 8.0 * a / (3.0 * G * C.C11 * in.reduction.k11);
+  double L2 = 8.0 * a / (3.0 * G * C.C22 * in.reduction.k22);
+  double L3 = kPi * a * std::sqrt(a / b) / (4.0 * G * C.C23 * in.reduction.k23);
+  if (options_.flexibility == FastsimFlexibility::blended) blend_flexibilities(in, C, L1, L2, L3);
   const double p0 = ((options_.bound == TractionBound::elliptic) ? 3.0 * Fz / (2.0 * kPi * a * b)
                                                                  : 2.0 * Fz / (kPi * a * b)) *
                     load_scale_;
@@ -179,13 +208,28 @@ ContactForces Fastsim::solve(const ContactInput& in, TangentialWorkspace* /*ws*/
     area += 2.0 * aj * dy;
     stick += adh * dy;
   }
-  return strip_model_result("fastsim", in, Fx, Fy, Mz, stick, area);
+  return strip_model_result(name_, in, Fx, Fy, Mz, stick, area);
 }
 
 std::unique_ptr<TangentialModel> make_fastsim(const TangentialModelOptions& options) {
-  FastsimOptions o;  // 20 x 20
+  FastsimOptions o;  // 20 x 20, blended flexibilities, elliptic bound
   o.nx = o.ny = StripGrid::size_option(options, "fastsim", o.nx);
   return std::make_unique<Fastsim>(o);
+}
+
+std::unique_ptr<TangentialModel> make_fastsim_kalker(const TangentialModelOptions& options) {
+  FastsimOptions o;
+  o.flexibility = FastsimFlexibility::three;
+  o.nx = o.ny = StripGrid::size_option(options, "fastsim_kalker", o.nx);
+  return std::make_unique<Fastsim>(o, "fastsim_kalker");
+}
+
+std::unique_ptr<TangentialModel> make_fastsim_parabolic(const TangentialModelOptions& options) {
+  FastsimOptions o;
+  o.flexibility = FastsimFlexibility::three;
+  o.bound = TractionBound::parabolic;
+  o.nx = o.ny = StripGrid::size_option(options, "fastsim_parabolic", o.nx);
+  return std::make_unique<Fastsim>(o, "fastsim_parabolic");
 }
 
 }  // namespace railsim::contact

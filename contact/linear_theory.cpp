@@ -41,7 +41,8 @@ void check_input(const ContactInput& in) {
 class LinearTheory final : public TangentialModel {
  public:
   std::string_view name() const override { return "linear"; }
-  ContactForces solve(const ContactInput& in, TangentialWorkspace*) const override {
+  bool coulomb_bounded() const override { return false; }  // the unsaturated theory by definition
+  ContactForces compute(const ContactInput& in, TangentialWorkspace*) const override {
     const LinearCoefficients f = linear_coefficients(in);
     ContactForces out = scaled_forces(linear_forces(f, in.creep), 1.0);
     if (norm2(out.Fx, out.Fy) > kLimit * in.material.mu * in.patch.Fz) {

@@ -26,17 +26,20 @@ class Polach final : public TangentialModel {
  public:
   explicit Polach(const PolachParameters& p) : p_(p) {}
   std::string_view name() const override { return "polach"; }
+  // Polach's friction mu(w) = mu0 [(1 - A) exp(-B w) + A] bounds the force.
+  double friction_coefficient(const ContactInput& in) const override {
+    const double mu0 = p_.mu0 > 0.0 ? p_.mu0 : in.material.mu;
+    const double w = norm2(in.creep.xi, in.creep.eta) * std::abs(in.rolling_speed);
+    return mu0 * ((1.0 - p_.A) * std::exp(-p_.B * w) + p_.A);
+  }
 
-  ContactForces solve(const ContactInput& in, TangentialWorkspace*) const override {
+  ContactForces compute(const ContactInput& in, TangentialWorkspace*) const override {
     const LinearCoefficients f = linear_coefficients(in);  // checks the input
     const double a = in.patch.a, b = in.patch.b;
     const double Fz = in.patch.Fz;
     const double xi = in.creep.xi, eta = in.creep.eta, phi = in.creep.phi;
     const double s = norm2(xi, eta);
-    const double mu0 = p_.mu0 > 0.0 ? p_.mu0 : in.material.mu;
-    const double w = s * std::abs(in.rolling_speed);
-    const double mu = mu0 * ((1.0 - p_.A) * std::exp(-p_.B * w) + p_.A);
-    const double muN = mu * Fz;
+    const double muN = friction_coefficient(in) * Fz;
 
     ContactForces out;
     // Translational creepage. f11 = G ab k11 C11, so G pi a b C_jj s / 4 = (pi/4) |(f11 xi, f22 eta)|.
@@ -75,7 +78,7 @@ class Polach final : public TangentialModel {
       out.reason = "a/b outside [0.1, 10], where Polach's spin factor is fitted";
     } else if (norm2(out.Fx, out.Fy) > muN * (1.0 + 1e-9)) {
       out.valid = false;
-      out.reason = "spin and creep forces superposed above mu Fz";
+      out.reason = "spin and creep forces superposed above mu Fz: limited to mu Fz";
     }
     return out;
   }

@@ -25,7 +25,10 @@
 // w = s V (V = ContactInput::rolling_speed); with V = 0, mu = mu0.
 // Validity: Hertzian patches; the spin factor 6.3 (1 - exp(-a/b)) is fitted for
 // 0.1 <= a/b <= 10 - flagged outside. The spin term is superposed on the
-// translational force, so |F| can exceed mu Fz slightly - flagged.
+// translational force, so the formula can exceed mu Fz (up to 1.46 mu Fz on
+// tests/data/contact/spin_reference); the Coulomb law of the interface
+// (coulomb_bound.hpp) limits it to mu(w) Fz along its direction and the case
+// is flagged.
 // Units: SI (B in s/m, w in m/s); signs as in types.hpp.
 #pragma once
 

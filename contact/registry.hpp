@@ -26,9 +26,16 @@ struct TangentialModelEntry {
   const char* description;
   TangentialFactory make;
   // Built from a table that is computed once and cached on disk (mim_table:
-  // about 40 s on two cores the first time). Commands that run every model by
+  // 56,277 MIM solves at grid 28 the first time, about 15 - 30 min on two
+  // cores; measured once: 29 min while another solver run shared the machine). Commands that run every model by
   // default (demo, compare-contact, benchmarks) leave these out unless asked.
   bool tabulated = false;
+  // What the model does with spin and where that fails, measured against
+  // railsim's exact reference set (tests/data/contact/spin_reference); shown
+  // by `railsim contact` and in README.md. The exact |Fy| under pure spin
+  // peaks near phi = 0.75 1/m on these patches (psi' = G c^3 C23 phi/(mu Fz)
+  // about 1) and then falls (0.20 mu Fz at 5 1/m, circular patch).
+  const char* spin = "";
 };
 
 // Every registered model, in the order they are listed to users.

@@ -26,7 +26,7 @@ namespace {
 class ShenHedrickElkins final : public TangentialModel {
  public:
   std::string_view name() const override { return "she"; }
-  ContactForces solve(const ContactInput& in, TangentialWorkspace*) const override {
+  ContactForces compute(const ContactInput& in, TangentialWorkspace*) const override {
     const LinearCoefficients f = linear_coefficients(in);
     const LinearForces lin = linear_forces(f, in.creep);
     const double bound = in.material.mu * in.patch.Fz;

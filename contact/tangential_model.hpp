@@ -5,6 +5,14 @@
 // solver) create it once through make_workspace(); solve() then does not
 // allocate. Models without scratch memory return nullptr and ignore the pointer.
 //
+// The Coulomb bound is a law of the interface, not of each model: solve()
+// returns the model's forces limited to |(Fx, Fy)| <= mu Fz
+// (contact/coulomb_bound.hpp), where mu is the model's friction coefficient
+// (friction_coefficient(); Material::mu unless the law has its own, e.g.
+// Polach's slip-velocity-dependent mu). The only model exempt is Kalker's
+// unsaturated linear theory ("linear"), which is the small-creepage reference
+// by definition and flags large forces instead.
+//
 // Models are created by name through the registry (registry.hpp).
 #pragma once
 
@@ -27,8 +35,17 @@ class TangentialModel {
   virtual std::string_view name() const = 0;
   // Scratch memory for solve(); nullptr when the model needs none.
   virtual std::unique_ptr<TangentialWorkspace> make_workspace() const { return nullptr; }
-  // Forces of the rail on the wheel for one contact.
-  virtual ContactForces solve(const ContactInput& in, TangentialWorkspace* ws) const = 0;
+  // Forces of the rail on the wheel for one contact, within the Coulomb bound
+  // (see above; a force limited by more than 0.1 % is flagged invalid, saying why).
+  ContactForces solve(const ContactInput& in, TangentialWorkspace* ws = nullptr) const;
+  // The friction coefficient of the bound |F| <= mu Fz for this contact.
+  virtual double friction_coefficient(const ContactInput& in) const { return in.material.mu; }
+  // False only for the unsaturated linear theory.
+  virtual bool coulomb_bounded() const { return true; }
+
+ protected:
+  // The model's own forces (before the Coulomb bound).
+  virtual ContactForces compute(const ContactInput& in, TangentialWorkspace* ws) const = 0;
 };
 
 }  // namespace railsim::contact

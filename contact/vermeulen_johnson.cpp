@@ -25,7 +25,7 @@ namespace {
 class VermeulenJohnson final : public TangentialModel {
  public:
   std::string_view name() const override { return "vermeulen_johnson"; }
-  ContactForces solve(const ContactInput& in, TangentialWorkspace*) const override {
+  ContactForces compute(const ContactInput& in, TangentialWorkspace*) const override {
     const LinearCoefficients f = linear_coefficients(in);
     Creepages no_spin = in.creep;
     no_spin.phi = 0.0;

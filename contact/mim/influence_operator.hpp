@@ -6,7 +6,8 @@
 // influence.hpp (two quasi-identical bodies). The rolling operator is the
 // steady-rolling discretisation with the element length as rolling step
 // (Kalker 1990, sec. 5.2): the slip of element i is
-//   s_i = w_i + (u_i - u_{i+1})/dx,   rigid slip w = (xi - phi y, eta + phi x),
+//   s_i = w_i + (u_i - u_{i+1})/dx,   rigid slip w = (xi - phi y, eta + phi x)
+// (x evaluated at x_i + dx/6 for spin, see mim_model.hpp),
 // where u_{i+1} is the displacement one element further along +x (the
 // leading side: material flows from +x to -x). Its kernel is the difference
 // of A_t at offsets k and k + 1, so it is one more convolution.

@@ -94,12 +94,14 @@ void MimSolver::normal(const std::vector<double>& gap, double Fz) {
 
 void MimSolver::tangential(TangentialProblem kind, double w1, double w2, double w3, double mu) {
   const ContactGrid& g = sol_.grid;
+  // Spin's rigid slip at x_i + dx/6, consistent with the rolling step (mim_model.hpp).
+  const double spin_dx = g.dx / 6.0;
   for (int j = 0; j < g.my; ++j)
     for (int i = 0; i < g.mx; ++i) {
       const int q = g.index(i, j);
       if (kind == TangentialProblem::SteadyRolling) {
-        wx_[q] = w1 - w3 * g.y(j);  // xi - phi y
-        wy_[q] = w2 + w3 * g.x(i);  // eta + phi x
+        wx_[q] = w1 - w3 * g.y(j);              // xi - phi y
+        wy_[q] = w2 + w3 * (g.x(i) + spin_dx);  // eta + phi x
       } else {
         wx_[q] = w1;
         wy_[q] = w2;
@@ -204,7 +206,7 @@ class MimModel final : public TangentialModel {
   std::unique_ptr<TangentialWorkspace> make_workspace() const override {
     return std::make_unique<MimWorkspace>(opt_);
   }
-  ContactForces solve(const ContactInput& in, TangentialWorkspace* ws) const override {
+  ContactForces compute(const ContactInput& in, TangentialWorkspace* ws) const override {
     std::unique_ptr<MimWorkspace> local;
     auto* w = dynamic_cast<MimWorkspace*>(ws);
     if (!w) {

@@ -64,6 +64,20 @@ TEST_CASE("railsim contact writes one row per case with the Hertz patch", "[cli]
   // Semi-axes given: the patch is the one asked for.
   CHECK(t.number(5, "a") == Approx(0.010).epsilon(1e-9));
   CHECK(t.number(5, "b") == Approx(0.004).epsilon(1e-9));
+  // The output says what the law does with spin (contact/registry.cpp).
+  CHECK(r.output.find("chopaya and spin: spin through the reduced lateral creepage") != std::string::npos);
+  CHECK(r.output.find("no fall past the peak") != std::string::npos);
+  // --no-timing: solved once, the same forces, time_ns written as 0.
+  const std::string out2 = dir + "/r2.csv";
+  const auto r2 = run_railsim("contact '" + railsim::test::source_path("scenarios/contact_cases.yaml") +
+                              "' --model chopaya --no-timing --out '" + out2 + "'");
+  REQUIRE(r2.exit_code == 0);
+  const auto t2 = railsim::results::read_csv(out2);
+  REQUIRE(t2.rows.size() == t.rows.size());
+  for (std::size_t i = 0; i < t2.rows.size(); ++i) {
+    CHECK(t2.number(i, "time_ns") == 0.0);
+    CHECK(t2.number(i, "Fy") == t.number(i, "Fy"));
+  }
 }
 
 TEST_CASE("railsim contact --reduction overrides the file and scales linear forces", "[cli][contact]") {

@@ -173,15 +173,19 @@ TEST_CASE("FaStrip rejects bad input and is registered as fastrip", "[fastrip][i
 }
 
 TEST_CASE("FaStrip and FASTSIM with creepage combined with spin against the live MIM solver", "[fastrip]") {
-  // Creepage combined with spin, where our FaStrip-type coupling is weakest
-  // (fastrip.hpp). Reference: the exact MIM solver, 30 elements across the
-  // patch. Measured errors |dF|/|F| (with the slip zone from Carter's split
-  // instead of the first point where the total traction reaches the bound
-  // fastrip had 9.3 %, 6.9 %, 3.9 %; before any creepage pull 11 %, 23 %, 5.8 %):
-  //   xi 1e-3, phi 1 1/m:            fastsim 5.9 %, fastrip 5.5 %
-  //   xi 2e-3, eta 1e-3, phi 1.5 1/m: fastsim 7.5 %, fastrip 5.4 %
-  //   eta 1e-3, phi 1 1/m:           fastsim 6.5 %, fastrip 5.6 %
-  // Issue 5 acceptance: fastrip closer than fastsim on each.
+  // Creepage combined with spin, with every sign image of each case:
+  // (xi, eta, phi), its mirror (xi, -eta, -phi) (exactly the same errors) and
+  // the opposing images (xi, eta, -phi), (xi, -eta, phi), where lateral
+  // creepage works against spin. Reference: the exact MIM solver, 30 elements
+  // across the patch. Error |dF| / |F_MIM|, measured (fastsim = blended):
+  //   case                        same sign            opposing
+  //   xi 1e-3, phi 1 1/m          fs 6.3 %, fr 2.9 %   (the same: Fx unchanged, Fy mirrored)
+  //   xi 2e-3, eta 1e-3, phi 1.5  fs 5.7 %, fr 3.4 %   fs 5.9 %, fr 7.5 %
+  //   eta 1e-3, phi 1             fs 6.5 %, fr 1.2 %   fs 3.4 %, fr 3.1 %
+  //   eta 0.01, phi 1             fs 0.30 %, fr 0.31 % fs 1.8 %, fr 4.5 %  (issue 15: fastrip had 79 %)
+  // Issue 5 acceptance: fastrip closer than fastsim with creepage and spin of
+  // the same sign; with opposing signs FaStrip is not closer point by point
+  // (its largest error over the reference set is, test_reference_set.cpp).
   railsim::contact::mim::MimOptions o;
   o.grid = 30;
   o.tolerance = 1e-6;
@@ -190,23 +194,24 @@ TEST_CASE("FaStrip and FASTSIM with creepage combined with spin against the live
   const HertzPatch p = hertz_from_semi_axes(6e-3, 6e-3, 75e3, m);
   const Fastsim fs;
   const Fastrip fr;
-  struct Case {
-    Creepages c;
-    double fs_max, fr_max;
-  };
-  for (const Case& k : {Case{{1e-3, 0.0, 1.0}, 0.10, 0.06}, Case{{2e-3, 1e-3, 1.5}, 0.10, 0.06},
-                        Case{{0.0, 1e-3, 1.0}, 0.10, 0.06}}) {
-    const auto& r = mim.solve_hertz(p, k.c, m);
-    ContactInput in;
-    in.patch = p;
-    in.material = m;
-    in.creep = k.c;
-    const ContactForces a = fs.solve(in), b = fr.solve(in);
-    const double F = std::hypot(r.Fx, r.Fy);
-    const double ea = std::hypot(a.Fx - r.Fx, a.Fy - r.Fy) / F, eb = std::hypot(b.Fx - r.Fx, b.Fy - r.Fy) / F;
-    WARN("xi " << k.c.xi << " eta " << k.c.eta << " phi " << k.c.phi << ": fastsim " << ea << ", fastrip " << eb);
-    CHECK(ea < k.fs_max);
-    CHECK(eb < k.fr_max);
-    CHECK(eb < ea);
+  for (const Creepages& c0 : {Creepages{1e-3, 0.0, 1.0}, Creepages{2e-3, 1e-3, 1.5}, Creepages{0.0, 1e-3, 1.0},
+                              Creepages{0.0, 0.01, 1.0}}) {
+    for (const auto& [se, sp] : {std::pair{1.0, 1.0}, std::pair{-1.0, -1.0}, std::pair{1.0, -1.0}, std::pair{-1.0, 1.0}}) {
+      const Creepages c{c0.xi, se * c0.eta, sp * c0.phi};
+      const auto& r = mim.solve_hertz(p, c, m);
+      ContactInput in;
+      in.patch = p;
+      in.material = m;
+      in.creep = c;
+      const ContactForces a = fs.solve(in), b = fr.solve(in);
+      const double F = std::hypot(r.Fx, r.Fy);
+      const double ea = std::hypot(a.Fx - r.Fx, a.Fy - r.Fy) / F, eb = std::hypot(b.Fx - r.Fx, b.Fy - r.Fy) / F;
+      WARN("xi " << c.xi << " eta " << c.eta << " phi " << c.phi << ": fastsim " << ea << ", fastrip " << eb);
+      const bool same_sign = c.eta * c.phi >= 0.0;
+      CHECK(ea < 0.08);
+      // The cases of issue 5 (same sign, small creepage) keep their bound of 6 %.
+      CHECK(eb < ((same_sign && c0.eta < 0.005) ? 0.06 : 0.08));
+      if (same_sign && c0.eta < 0.005) CHECK(eb < ea);
+    }
   }
 }
