@@ -27,6 +27,7 @@
 #include "contact/geometry/wheel_rail_geometry.hpp"
 #include "core/errors.hpp"
 #include "engine/analysis/wheelset_contact_cases.hpp"
+#include "engine/scenario.hpp"
 #include "results/csv_writer.hpp"
 
 namespace railsim::cli {
@@ -58,15 +59,7 @@ int run_wheelset_contact(const WheelsetContactArgs& a) {
   };
   s.wheel = profile("wheel", s.wheel);
   s.rail = profile("rail", s.rail);
-  if (auto n = root.find("inclination"))
-    s.track.inclination = contact::parse_inclination(n->as_string(), n->where() + ": key 'inclination'");
-  else
-    s.track.inclination = std::atan(1.0 / 40.0);
-  if (root.has("gauge")) s.track.gauge = root.in_range("gauge", 0.9, 1.8);
-  if (root.has("gauge_depth")) s.track.gauge_depth = root.in_range("gauge_depth", 0.0, 0.03);
-  if (root.has("flange_back")) s.track.flange_back = root.in_range("flange_back", 0.8, 1.8);
-  if (root.has("back_face")) s.track.back_face = root.in_range("back_face", -0.2, 0.0);
-  if (root.has("nominal_radius")) s.track.r0 = root.in_range("nominal_radius", 0.1, 1.5);
+  s.track = engine::read_track_setup(root, "nominal_radius");
   if (auto m = root.find("material")) {
     m->allow_only({"E", "G", "nu", "mu"});
     if (m->has("E") && m->has("G")) m->fail("give E or G, not both");

@@ -96,17 +96,7 @@ std::shared_ptr<const ContactGeometry> load_geometry(const InputNode& g, const s
     };
     p.wheel = profile("wheel", p.wheel);
     p.rail = profile("rail", p.rail);
-    if (g.has("inclination")) {
-      const InputNode n = g.at("inclination");
-      p.setup.inclination = contact::parse_inclination(n.as_string(), n.where() + ": key 'inclination'");
-    } else {
-      p.setup.inclination = std::atan(1.0 / 40.0);
-    }
-    if (g.has("gauge")) p.setup.gauge = g.in_range("gauge", 0.9, 1.8);
-    if (g.has("gauge_depth")) p.setup.gauge_depth = g.in_range("gauge_depth", 0.0, 0.03);
-    if (g.has("flange_back")) p.setup.flange_back = g.in_range("flange_back", 0.8, 1.8);
-    if (g.has("back_face")) p.setup.back_face = g.in_range("back_face", -0.2, 0.0);
-    if (g.has("r0")) p.setup.r0 = g.in_range("r0", 0.1, 1.5);
+    p.setup = read_track_setup(g, "r0");
     const double s_max = g.has("max_shift") ? g.in_range("max_shift", 0.002, 0.02) : 0.015;
     p.grid.y_min = -s_max;
     p.grid.y_max = s_max;
@@ -144,6 +134,22 @@ CriticalSpeedSettings load_critical_speed_settings(const InputNode& n) {
 }
 
 }  // namespace
+
+contact::TrackSetup read_track_setup(const InputNode& g, const std::string& radius_key) {
+  contact::TrackSetup t;
+  if (g.has("inclination")) {
+    const InputNode n = g.at("inclination");
+    t.inclination = contact::parse_inclination(n.as_string(), n.where() + ": key 'inclination'");
+  } else {
+    t.inclination = std::atan(1.0 / 40.0);
+  }
+  if (g.has("gauge")) t.gauge = g.in_range("gauge", 0.9, 1.8);
+  if (g.has("gauge_depth")) t.gauge_depth = g.in_range("gauge_depth", 0.0, 0.03);
+  if (g.has("flange_back")) t.flange_back = g.in_range("flange_back", 0.8, 1.8);
+  if (g.has("back_face")) t.back_face = g.in_range("back_face", -0.2, 0.0);
+  if (g.has(radius_key)) t.r0 = g.in_range(radius_key, 0.1, 1.5);
+  return t;
+}
 
 Scenario load_scenario(const std::string& path) {
   const auto root = InputNode::load_file(path);

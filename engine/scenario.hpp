@@ -42,6 +42,7 @@
 #include <string>
 
 #include "config/yaml_input.hpp"
+#include "contact/geometry/wheel_rail_geometry.hpp"
 #include "engine/integrator.hpp"
 #include "engine/model.hpp"
 
@@ -82,6 +83,10 @@ struct Scenario {
 };
 
 Scenario load_scenario(const std::string& path);
+// Track set-up of a wheel-rail pair from a YAML map (inclination, default 1/40;
+// gauge, gauge_depth, flange_back, back_face; the wheel radius under
+// `radius_key`), each checked against its admissible range.
+contact::TrackSetup read_track_setup(const config::InputNode& node, const std::string& radius_key);
 Scenario load_scenario(const config::InputNode& root, const std::string& base_dir);
 
 }  // namespace railsim::engine

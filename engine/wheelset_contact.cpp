@@ -118,6 +118,18 @@ void patches_to_points(const StripLoads& L, const contact::Material& m, WheelGeo
   }
 }
 
+// The lateral model's quasi-static load of a wheel fell to zero: it cannot
+// lift a wheel (the full model can). Always false.
+bool lateral_loss_of_contact(Data& d, const Wheelset& ws, int i, double Q) {
+  char buf[320];
+  std::snprintf(buf, sizeof buf,
+                "wheelset '%s', %s wheel: loss of contact (vertical load %.4g N) [model: lateral wheelset, "
+                "quasi-static loads; use the full wheelset model for wheel lift]",
+                ws.name.c_str(), i == 0 ? "left" : "right", Q);
+  d.fail(buf);
+  return false;
+}
+
 // Normal loads from strips: full model, from the wheel's approach; lateral
 // model, the approach that carries the quasi-static load.
 bool distributed_loads(const Model& model, Data& d, int w, const WheelsetKinematics& k, const contact::StripSet* strips,
@@ -180,15 +192,7 @@ bool distributed_loads(const Model& model, Data& d, int w, const WheelsetKinemat
   Qlat[0] = (S * a[1] + D) / (a[0] + a[1]);
   Qlat[1] = (S * a[0] - D) / (a[0] + a[1]);
   for (int i = 0; i < 2; ++i) {
-    if (!(Qlat[i] > 0.0)) {
-      char buf[320];
-      std::snprintf(buf, sizeof buf,
-                    "wheelset '%s', %s wheel: loss of contact (vertical load %.4g N) [model: lateral wheelset, "
-                    "quasi-static loads; use the full wheelset model for wheel lift]",
-                    ws.name.c_str(), i == 0 ? "left" : "right", Qlat[i]);
-      d.fail(buf);
-      return false;
-    }
+    if (!(Qlat[i] > 0.0)) return lateral_loss_of_contact(d, ws, i, Qlat[i]);
     strip_approach_for_load(strips[i], Qlat[i], 0.0, Es, L);
     patches_to_points(L, mat, g[i], N[i]);
   }
@@ -348,15 +352,7 @@ bool wheelset_forces(const Model& model, Data& d, int w, const double* x, double
       Qlat[1] = (S * a[0] - D) / (a[0] + a[1]);
       for (int i = 0; i < 2; ++i) {
         const int side = i == 0 ? 1 : -1;
-        if (!(Qlat[i] > 0.0)) {
-          char buf[320];
-          std::snprintf(buf, sizeof buf,
-                        "wheelset '%s', %s wheel: loss of contact (vertical load %.4g N) [model: lateral wheelset, "
-                        "quasi-static loads; use the full wheelset model for wheel lift]",
-                        ws.name.c_str(), i == 0 ? "left" : "right", Qlat[i]);
-          d.fail(buf);
-          return false;
-        }
+        if (!(Qlat[i] > 0.0)) return lateral_loss_of_contact(d, ws, i, Qlat[i]);
         share_wheel_load(g[i], Qlat[i], side * k.phi, ws.static_load[i], ws.hertz_q0[i], N[i]);
         if (pass + 1 < passes) {
           double num = 0.0, den = 0.0;

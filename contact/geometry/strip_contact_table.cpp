@@ -24,6 +24,23 @@ namespace railsim::contact {
 namespace {
 constexpr char kMagic[8] = {'R', 'S', 'S', 'T', 'R', 'P', '0', '3'};
 
+// Cubic Hermite basis on a cell of width h at t in [0, 1]: values
+// (h00 f_a + h10 f'_a + h01 f_b + h11 f'_b) and derivatives d/dy
+// (d00 f_a + d10 f'_a - d00 f_b + d11 f'_b).
+struct HermiteBasis {
+  double h00, h10, h01, h11, d00, d10, d11;
+  HermiteBasis(double t, double h) {
+    const double t2 = t * t, t3 = t2 * t;
+    h00 = 2 * t3 - 3 * t2 + 1;
+    h10 = (t3 - 2 * t2 + t) * h;
+    h01 = -2 * t3 + 3 * t2;
+    h11 = (t3 - t2) * h;
+    d00 = (6 * t2 - 6 * t) / h;
+    d10 = 3 * t2 - 4 * t + 1;
+    d11 = 3 * t2 - 2 * t;
+  }
+};
+
 std::string num(double v) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.6g", v);
@@ -270,10 +287,8 @@ void StripContactTable::pose(double y, double psi, StripPose& out) const {
   int i, k;
   double t, w, apsi;
   locate(y, psi, i, t, k, w, apsi);
-  const double h = grid_.y_step;
-  const double t2 = t * t, t3 = t2 * t;
-  const double h00 = 2 * t3 - 3 * t2 + 1, h10 = (t3 - 2 * t2 + t) * h, h01 = -2 * t3 + 3 * t2, h11 = (t3 - t2) * h;
-  const double d00 = (6 * t2 - 6 * t) / h, d10 = 3 * t2 - 4 * t + 1, d11 = 3 * t2 - 2 * t;
+  const HermiteBasis H(t, grid_.y_step);
+  const double h00 = H.h00, h10 = H.h10, h01 = H.h01, h11 = H.h11, d00 = H.d00, d10 = H.d10, d11 = H.d11;
   auto at = [&](int kk, double& roll, double& droll, double& z, double& dz) {
     const Row& a = row(kk, i);
     const Row& b = row(kk, i + 1);
@@ -302,9 +317,8 @@ void StripContactTable::strips(double y, double psi, double cutoff, StripSet& ou
   int i, k;
   double t, w, apsi;
   locate(y, psi, i, t, k, w, apsi);
-  const double h = grid_.y_step;
-  const double t2 = t * t, t3 = t2 * t;
-  const double h00 = 2 * t3 - 3 * t2 + 1, h10 = (t3 - 2 * t2 + t) * h, h01 = -2 * t3 + 3 * t2, h11 = (t3 - t2) * h;
+  const HermiteBasis H(t, grid_.y_step);
+  const double h00 = H.h00, h10 = H.h10, h01 = H.h01, h11 = H.h11;
   const bool two = nk_ > 1 && w > 0.0;
   const int kb = two ? k + 1 : k;
   // Common strip range of the (up to) four rows involved.

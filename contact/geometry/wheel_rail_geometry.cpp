@@ -247,10 +247,11 @@ ContactPoint WheelRailGeometry::make_point(Side side, double t, double y, double
   return p;
 }
 
-WheelContact WheelRailGeometry::wheel_contacts(Side side, double y, double z, double roll, double yaw) const {
+std::vector<std::size_t> WheelRailGeometry::gap_minima(Side side, double y, double z, double roll, double yaw,
+                                                       std::vector<double>& g) const {
   const double cr = std::cos(roll), sr = std::sin(roll), cy = std::cos(yaw), sy = std::sin(yaw);
   const std::size_t n = samples_.size();
-  std::vector<double> g(n);
+  g.resize(n);
   for (std::size_t k = 0; k < n; ++k) {
     const auto& w = samples_[k];
     g[k] = locus(side, w.s, w.F, w.Fs, y, z, cr, sr, cy, sy).gap;
@@ -276,6 +277,12 @@ WheelContact WheelRailGeometry::wheel_contacts(Side side, double y, double z, do
     }
     kept.push_back(m);
   }
+  return kept;
+}
+
+WheelContact WheelRailGeometry::wheel_contacts(Side side, double y, double z, double roll, double yaw) const {
+  std::vector<double> g;
+  const std::vector<std::size_t> kept = gap_minima(side, y, z, roll, yaw, g);
   WheelContact wc;
   if (kept.empty()) return wc;
   struct Cand {
@@ -298,34 +305,8 @@ WheelContact WheelRailGeometry::wheel_contacts(Side side, double y, double z, do
 
 std::vector<ContactCandidate> WheelRailGeometry::candidates(Side side, double y, double z, double roll, double yaw,
                                                             double gap_max) const {
-  const double cr = std::cos(roll), sr = std::sin(roll), cy = std::cos(yaw), sy = std::sin(yaw);
-  const std::size_t n = samples_.size();
-  std::vector<double> g(n);
-  for (std::size_t k = 0; k < n; ++k) {
-    const auto& w = samples_[k];
-    g[k] = locus(side, w.s, w.F, w.Fs, y, z, cr, sr, cy, sy).gap;
-  }
-  // Local minima (merging humps lower than 10 nm: spline noise), as wheel_contacts.
-  std::vector<std::size_t> mins;
-  for (std::size_t k = 0; k < n; ++k) {
-    if (!std::isfinite(g[k])) continue;
-    const double gl = k > 0 ? g[k - 1] : kInf;
-    const double gr = k + 1 < n ? g[k + 1] : kInf;
-    if (g[k] < gl && g[k] <= gr) mins.push_back(k);
-  }
-  constexpr double kProminence = 1e-8;
-  std::vector<std::size_t> kept;
-  for (std::size_t m : mins) {
-    if (!kept.empty()) {
-      const std::size_t a = kept.back();
-      const double peak = *std::max_element(g.begin() + static_cast<long>(a), g.begin() + static_cast<long>(m) + 1);
-      if (peak - std::max(g[a], g[m]) < kProminence) {
-        if (g[m] < g[a]) kept.back() = m;
-        continue;
-      }
-    }
-    kept.push_back(m);
-  }
+  std::vector<double> g;
+  const std::vector<std::size_t> kept = gap_minima(side, y, z, roll, yaw, g);
   std::vector<ContactCandidate> out;
   if (kept.empty()) return out;
   // Refined minima and ridges between neighbours.

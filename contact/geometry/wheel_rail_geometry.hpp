@@ -166,6 +166,10 @@ class WheelRailGeometry {
   double rail_depth(double u) const;  // rail z (down) at placed-profile lateral u; +inf outside
   double rail_t(double u) const;
   double refine(Side side, std::size_t k, double y, double z, double roll, double yaw, double& t_out) const;
+  // The wheel's vertical gap at every sample (g) and the indices of its local
+  // minima, neighbours not separated by a rise of 10 nm merged.
+  std::vector<std::size_t> gap_minima(Side side, double y, double z, double roll, double yaw,
+                                      std::vector<double>& g) const;
   void check_pose(double y, double yaw) const;
   ContactPoint make_point(Side side, double t, double y, double z, double roll, double yaw) const;
 
