@@ -3,6 +3,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 
@@ -97,12 +98,27 @@ std::string write_spec(const Chart& chart, const std::string& png_path) {
   for (const auto& p : chart.panels) panels.push(p);
   spec.set("panels", panels);
   spec.set("panel_columns", chart.panel_columns);
+  if (!chart.note.empty()) spec.set("note", chart.note);
+  if (chart.y_from_zero) spec.set("y_from_zero", true);
+  if (chart.width > 0 && chart.height > 0) spec.set("size", Json::array().push(chart.width).push(chart.height));
+  if (!chart.legend_location.empty()) spec.set("legend_location", chart.legend_location);
   const std::string spec_path = png_path + ".json";
   spec.write_file(spec_path);
   return spec_path;
 }
 
 }  // namespace
+
+std::string custom_style(const std::string& marker, const std::string& line, bool open, double size) {
+  std::string s = "custom:marker=" + marker + ";line=" + line;
+  if (open) s += ";open";
+  if (size > 0) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, ";size=%g", size);
+    s += buf;
+  }
+  return s;
+}
 
 bool draw_all(const std::vector<std::pair<const Chart*, std::string>>& charts) {
   if (charts.empty()) return true;
