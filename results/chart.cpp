@@ -34,7 +34,9 @@ std::string write_spec(const Chart& chart, const std::string& png_path) {
   spec.set("ylabel", chart.ylabel);
   spec.set("logx", chart.logx);
   spec.set("logy", chart.logy);
-  spec.set("output", png_path);
+  // The PNG's file name only: the description does not depend on the folder it
+  // is in (the renderer puts the PNG next to it), so equal charts have equal files.
+  spec.set("output", std::filesystem::path(png_path).filename().string());
   Json series = Json::array();
   for (const auto& s : chart.series) {
     Json js = Json::object();

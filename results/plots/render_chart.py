@@ -8,6 +8,7 @@ shared axes (small multiples): each series and annotation names its panel.
 """
 import json
 import math
+import os
 import sys
 import textwrap
 
@@ -200,6 +201,9 @@ def multiples(spec):
 def render(path):
     with open(path) as f:
         spec = json.load(f)
+    # The PNG goes next to its description unless the description names a full path.
+    if not os.path.isabs(spec["output"]):
+        spec["output"] = os.path.join(os.path.dirname(os.path.abspath(path)), spec["output"])
     if spec.get("panels"):
         fig = multiples(spec)
     else:
