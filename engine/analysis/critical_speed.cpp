@@ -228,7 +228,7 @@ BifurcationResult bifurcation_sweep(const Scenario& scenario, const BifurcationO
   so.result_columns = {"speed_m_s", "down", "amplitude_m", "frequency_hz", "growth", "failed"};
   so.threads = o.threads;
   so.use_mpi = o.use_mpi;
-  so.label = "bifurcation sweep";
+  so.label = o.label;
   auto fn = [&](const SweepPoint& p) {
     const double v = p.params[0];
     const bool down = p.params[1] > 0.5;
@@ -360,7 +360,7 @@ BifurcationResult continuation_sweep(const Scenario& scenario, const Bifurcation
   so.output = points_csv + ".sweep.csv";
   so.result_columns = columns;
   so.threads = o.threads;
-  so.label = "bifurcation sweep";
+  so.label = o.label;
   std::vector<SweepResult> rows = run_sweep(points, [&](const SweepPoint& p) {
     const double v = p.params[0];
     const bool down = p.params[1] > 0.5;
@@ -401,7 +401,7 @@ BifurcationResult continuation_sweep(const Scenario& scenario, const Bifurcation
       const std::string key = "chain:" + target.key.substr(target.key.find(':') + 1);
       auto done = std::find_if(chain.begin(), chain.end(), [&](const SweepResult& r) { return r.key == key; });
       if (done == chain.end() || (is_hunting(point_of(*done), o) && !point_of(*done).failed && !states.find(key))) {
-        spdlog::info("bifurcation sweep: following the branch down to {:.1f} km/h", v * 3.6);
+        spdlog::info("{}: following the branch down to {:.1f} km/h", o.label, v * 3.6);
         Eigen::VectorXd x_end;
         const PointOutcome r = run_point(scenario, v, *states.find(from), o, &x_end);
         if (!r.failed) states.put(key, x_end);

@@ -53,6 +53,7 @@ struct BifurcationOptions {
   bool continuation = false;
   int threads = 0;                   // 0: all cores
   bool use_mpi = false;
+  std::string label = "bifurcation sweep";  // progress messages
 };
 
 struct BifurcationPoint {

@@ -245,6 +245,7 @@ ReductionStudyResult reduction_study(const Scenario& base, const ReductionStudyO
       BifurcationOptions b = o.bifurcation;
       b.threads = per_entry;
       b.use_mpi = o.use_mpi;
+      b.label = "reductions: " + e.label;
       spdlog::info("reductions: {} ({}/{}) ...", e.label, i + 1, n);
       e.bifurcation = bifurcation_sweep(e.scenario, b, o.out_dir + "/" + e.folder + "/bifurcation.csv");
       e.critical = e.bifurcation.nonlinear_critical_speed;
