@@ -278,7 +278,7 @@ int run_reduction_study(const engine::Scenario& base, const CriticalSpeedArgs& a
                            {"entry", "label", "given", "form", "k11", "k22", "k23", "mu", "critical_speed_kmh",
                             "linear_critical_speed_kmh", "critical_speed_change_percent",
                             "linear_critical_speed_change_percent", "limit_cycle_amplitude_at_fold_mm",
-                            "limit_cycle_frequency_at_fold_hz", "folder"},
+                            "limit_cycle_frequency_at_fold_hz", "state_one_step_below", "folder"},
                            false, 1000);
     for (std::size_t i = 0; i < r.entries.size(); ++i) {
       const auto& e = r.entries[i];
@@ -297,6 +297,7 @@ int run_reduction_study(const engine::Scenario& base, const CriticalSpeedArgs& a
           .cell(e.linear_change_percent)
           .cell(e.fold_amplitude * 1e3)
           .cell(e.fold_frequency)
+          .cell(e.below_state)
           .cell(e.folder);
       csv.end_row();
     }
@@ -338,10 +339,13 @@ int run_reduction_study(const engine::Scenario& base, const CriticalSpeedArgs& a
     const auto& k = e.scenario.reduction.k;
     char fold[32] = "-";
     if (std::isfinite(e.fold_amplitude)) std::snprintf(fold, sizeof fold, "%.2f", e.fold_amplitude * 1e3);
-    std::printf("  %-38s %6.3g %6.3g %6.3g %10s %8s %10s %8s %9s%s\n", e.label.substr(0, 38).c_str(), k.k11, k.k22,
-                k.k23, kmh_cell(e.critical).c_str(), percent_cell(e.change_percent).c_str(),
-                kmh_cell(e.linear).c_str(), percent_cell(e.linear_change_percent).c_str(), fold,
-                e.added_reference ? "  (added as the k = 1 reference)" : "");
+    const bool bound = e.below_state == "decaying" || e.below_state == "growing";
+    std::printf("  %-38s %6.3g %6.3g %6.3g %10s %8s %10s %8s %9s%s%s\n", e.label.substr(0, 38).c_str(), k.k11, k.k22,
+                k.k23, (std::string(bound ? "<=" : "") + kmh_cell(e.critical)).c_str(),
+                percent_cell(e.change_percent).c_str(), kmh_cell(e.linear).c_str(),
+                percent_cell(e.linear_change_percent).c_str(), fold,
+                e.added_reference ? "  (added as the k = 1 reference)" : "",
+                bound ? "  (upper bound: the run one step below was still decaying)" : "");
   }
   std::printf("\n  wall time %.1f s\n  results   %s/reductions.csv, summary.json, reductions.png, "
               "critical_speed_vs_k.png\n\n",

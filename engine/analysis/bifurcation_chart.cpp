@@ -118,8 +118,8 @@ results::Chart bifurcation_chart(const std::vector<BifurcationCurve>& curves, co
   c.ylabel = "lateral amplitude over the tail of each run [mm]";
   c.y_from_zero = true;
   c.note = critical_speed_rule(o);
-  c.width = 9.0;
-  c.height = 6.0;
+  c.width = curves.size() > 2 ? 11.0 : 9.0;
+  c.height = curves.size() > 2 ? 6.5 : 6.0;
   for (const auto& cv : curves) {
     if (!cv.result) continue;
     const std::string label = cv.label + ": critical speed " + kmh_text(cv.result->nonlinear_critical_speed);

@@ -251,6 +251,11 @@ ReductionStudyResult reduction_study(const Scenario& base, const ReductionStudyO
       e.critical = e.bifurcation.nonlinear_critical_speed;
       e.fold_amplitude = e.bifurcation.fold_amplitude;
       e.fold_frequency = e.bifurcation.fold_frequency;
+      e.below_state.clear();
+      if (std::isfinite(e.critical))
+        for (const auto& p : e.bifurcation.points)
+          if (p.branch == "down" && std::fabs(p.speed - (e.critical - b.v_step)) < 1e-6 * b.v_step)
+            e.below_state = point_state_name(point_state(p, b));
       e.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - te).count();
       spdlog::info("reductions: {}: critical speed {:.1f} km/h ({:.0f} s)", e.label, e.critical * kKmh, e.wall_time);
     });
@@ -350,6 +355,8 @@ results::Json reduction_study_summary(const Scenario& sc, const ReductionStudyOp
       Json c = Json::object();
       for (int q = 0; q < 5; ++q) c.set(point_state_name(static_cast<PointState>(q)), counts[q]);
       j.set("points_by_state", c);
+      j.set("state_one_step_below_critical_speed", e.below_state.empty() ? Json(nullptr) : Json(e.below_state));
+      j.set("critical_speed_is_upper_bound", e.below_state == "decaying" || e.below_state == "growing");
       j.set("points", static_cast<long>(e.bifurcation.points.size()));
     } else {
       j.set("hunting_at_start", e.ramping.hunting_at_start);
@@ -473,6 +480,19 @@ results::Chart critical_speed_vs_k_chart(const Scenario& sc, const ReductionStud
     c.series.push_back(nl_o);
     c.series.push_back(lin_o);
   }
+  // Critical speeds read above a run that was still decaying at its end: upper bounds.
+  results::ChartSeries bound;
+  bound.label = "upper bound: the run one step below was still decaying at its end";
+  bound.color = "k";
+  bound.style = results::custom_style("o", "", true, 13);
+  for (const auto& e : r.entries)
+    if ((e.below_state == "decaying" || e.below_state == "growing") && std::isfinite(e.critical)) {
+      const auto& k = e.scenario.reduction.k;
+      const bool uni = k.k11 == k.k22 && k.k22 == k.k23 && e.scenario.reduction.form != contact::ReductionForm::layer;
+      bound.x.push_back(uni ? k.k11 : k.k22);
+      bound.y.push_back(e.critical * kKmh);
+    }
+  if (!bound.x.empty()) c.series.push_back(bound);
   c.note = "Points without a value (none found in the speed range) are left out.";
   return c;
 }

@@ -59,6 +59,10 @@ struct ReductionStudyEntry {
   double linear_change_percent = 0.0;
   double fold_amplitude = 0.0;       // [m]; NaN none
   double fold_frequency = 0.0;       // [Hz]; NaN none (ramping: NaN)
+  // Bifurcation: what the down-branch run one step below the critical speed did
+  // by its end ("centred": the branch ends there; "decaying": it was still
+  // decaying, so the critical speed is an upper bound); empty when none.
+  std::string below_state;
   BifurcationResult bifurcation;     // method bifurcation
   RampingResult ramping;             // method ramping
   double wall_time = 0.0;            // [s] spent on this entry in this call (0 when read back)
