@@ -145,19 +145,34 @@ results::Chart bifurcation_chart(const std::vector<BifurcationCurve>& curves, co
   return c;
 }
 
+void ramping_envelope(const RampingResult& r, std::vector<double>& speed_kmh, std::vector<double>& peak_mm,
+                      double window) {
+  speed_kmh.clear();
+  peak_mm.clear();
+  const auto& m = r.max_lateral;
+  // The largest value in consecutive windows of `window` seconds (a few cycles
+  // of the hunting motion: the beat between wheelsets does not show as a band).
+  std::size_t i = 0;
+  while (i < m.size()) {
+    std::size_t best = i, j = i;
+    for (; j < m.size() && r.time[j] < r.time[i] + window; ++j)
+      if (m[j] > m[best]) best = j;
+    speed_kmh.push_back(r.speed[best] * kKmh);
+    peak_mm.push_back(m[best] * 1e3);
+    i = std::max(j, i + 1);
+  }
+}
+
 results::Chart ramping_chart(const RampingResult& r, double linear, double threshold, const std::string& title) {
   results::Chart c;
   c.title = title;
   c.xlabel = "speed [km/h]";
-  c.ylabel = "max |lateral shift| of the wheelsets [mm]";
+  c.ylabel = "max |lateral shift| of the wheelsets over 0.5 s [mm]";
   c.y_from_zero = true;
   char buf[200];
   std::snprintf(buf, sizeof buf, "ramp from %.1f km/h (settled there first), decelerating", r.start_speed * kKmh);
   results::ChartSeries s = series(buf, "tab:blue", "", "-");
-  for (std::size_t i = 0; i < r.time.size(); ++i) {
-    s.x.push_back(r.speed[i] * kKmh);
-    s.y.push_back(r.max_lateral[i] * 1e3);
-  }
+  ramping_envelope(r, s.x, s.y);
   c.series.push_back(s);
   if (std::isfinite(r.critical_speed) && std::isfinite(r.critical_amplitude)) {
     std::snprintf(buf, sizeof buf, "critical speed read here: %.1f km/h (start of the final collapse)",

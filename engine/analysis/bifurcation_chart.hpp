@@ -42,9 +42,15 @@ std::string critical_speed_rule(const BifurcationOptions& o);
 results::Chart bifurcation_chart(const std::vector<BifurcationCurve>& curves, const BifurcationOptions& o,
                                  const std::string& title, bool up_branch);
 
-// Ramping: envelope against speed, the ramp's start speed in the legend, the
-// point where the critical speed was read, the linear critical speed (NaN: none).
+// Ramping: envelope (largest wheelset shift over 0.5 s windows) against speed,
+// the ramp's start speed in the legend, the point where the critical speed was
+// read, the linear critical speed (NaN: none).
 results::Chart ramping_chart(const RampingResult& r, double linear_critical_speed, double threshold,
                              const std::string& title);
+
+// Envelope of a ramping record: the largest max_lateral [mm] in consecutive
+// windows of `window` seconds, at the speed [km/h] where it occurs.
+void ramping_envelope(const RampingResult& r, std::vector<double>& speed_kmh, std::vector<double>& peak_mm,
+                      double window = 0.5);
 
 }  // namespace railsim::engine

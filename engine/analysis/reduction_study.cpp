@@ -399,10 +399,10 @@ results::Chart reductions_chart(const Scenario& sc, const ReductionStudyOptions&
   results::Chart c;
   c.title = "Ramping against the reduction factors: " + sc.name;
   c.xlabel = "speed [km/h]";
-  c.ylabel = "max |lateral shift| of the wheelsets [mm]";
+  c.ylabel = "max |lateral shift| of the wheelsets over 0.5 s [mm]";
   c.y_from_zero = true;
-  c.width = 9.0;
-  c.height = 6.0;
+  c.width = 11.0;
+  c.height = 6.5;
   char buf[160];
   for (std::size_t i = 0; i < r.entries.size(); ++i) {
     const auto& e = r.entries[i];
@@ -411,10 +411,7 @@ results::Chart reductions_chart(const Scenario& sc, const ReductionStudyOptions&
     s.label = display_label(e) + (std::isfinite(e.critical) ? std::string(buf) : ": none found");
     s.color = reduction_entry_color(i);
     s.style = results::custom_style("", "-");
-    for (std::size_t q = 0; q < e.ramping.time.size(); ++q) {
-      s.x.push_back(e.ramping.speed[q] * kKmh);
-      s.y.push_back(e.ramping.max_lateral[q] * 1e3);
-    }
+    ramping_envelope(e.ramping, s.x, s.y);
     c.series.push_back(s);
     if (std::isfinite(e.critical) && std::isfinite(e.fold_amplitude)) {
       results::ChartSeries at;

@@ -114,6 +114,19 @@ TEST_CASE("ramping chart names the start speed and marks where the critical spee
   CHECK(c.series[1].x[0] == Approx(250.0));
   CHECK(c.series[1].y[0] == Approx(6.0));
   CHECK(c.note.find("final collapse") != std::string::npos);
+  // The envelope: the largest value in each window (here 2 s: samples 0-1, 2-3, 4).
+  r.time = {0, 1, 2, 3, 4};
+  r.speed = {50, 49, 48, 47, 46};
+  r.max_lateral = {1e-3, 3e-3, 1e-3, 2e-3, 1e-3};
+  std::vector<double> v, peak;
+  ramping_envelope(r, v, peak, 2.0);
+  const double want_v[] = {176.4, 169.2, 165.6}, want_peak[] = {3.0, 2.0, 1.0};
+  REQUIRE(v.size() == 3);
+  REQUIRE(peak.size() == 3);
+  for (int i = 0; i < 3; ++i) {
+    CHECK(v[static_cast<std::size_t>(i)] == Approx(want_v[i]));
+    CHECK(peak[static_cast<std::size_t>(i)] == Approx(want_peak[i]));
+  }
 }
 
 TEST_CASE("a sweep reports the limit cycle at its fold", "[chart][critical_speed]") {
