@@ -3,15 +3,14 @@
 
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
-#include <functional>
 #include <sstream>
 #include <string>
-#include <unistd.h>
 
 #include "contact/mim/mim_model.hpp"
-#include "contact/mim_table.hpp"
+#include "core/atomic_file.hpp"
+#include "core/cache_dir.hpp"
+#include "core/content_hash.hpp"
 #include "core/errors.hpp"
 
 namespace railsim::contact::mim {
@@ -103,12 +102,13 @@ LayerReduction third_body_reduction_cached(const HertzPatch& patch, const Materi
   const std::string key = cache_key(patch, material, layer, n_minor);
   std::string dir;
   try {
-    dir = mim_table_cache_dir(cache_dir);
+    dir = railsim::cache_dir(cache_dir, "third-body layer");
   } catch (const std::exception&) {
     dir.clear();
   }
   char name[64];
-  std::snprintf(name, sizeof name, "third_body_%016zx.txt", std::hash<std::string>{}(key));
+  std::snprintf(name, sizeof name, "third_body_%016llx.txt",
+                static_cast<unsigned long long>(ContentHash().text(key).value()));
   const std::string path = dir.empty() ? std::string() : dir + "/" + name;
   if (!path.empty() && read_cache(path, key, r.k)) {
     r.from_cache = true;
@@ -117,18 +117,14 @@ LayerReduction third_body_reduction_cached(const HertzPatch& patch, const Materi
   }
   r.k = third_body_reduction(patch, material, layer, n_minor);
   if (!path.empty()) {
-    // Write to a file of this process, then rename: readers see all or nothing.
-    const std::string tmp = path + ".tmp" + std::to_string(::getpid());
-    {
-      std::ofstream out(tmp);
-      char line[128];
-      std::snprintf(line, sizeof line, "%.17g,%.17g,%.17g", r.k.k11, r.k.k22, r.k.k23);
-      out << key << "\n" << line << "\n";
+    // Readers see all or nothing; a cache that cannot be written is skipped.
+    char line[128];
+    std::snprintf(line, sizeof line, "%.17g,%.17g,%.17g", r.k.k11, r.k.k22, r.k.k23);
+    try {
+      write_file_atomically(path, key + "\n" + line + "\n");
+      r.cache_file = path;
+    } catch (const InputError&) {
     }
-    std::error_code ec;
-    std::filesystem::rename(tmp, path, ec);
-    if (ec) std::filesystem::remove(tmp, ec);
-    else r.cache_file = path;
   }
   return r;
 }

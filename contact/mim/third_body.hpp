@@ -58,7 +58,7 @@ struct LayerReduction {
 };
 
 // third_body_reduction for `patch` (A, B, a, b, Fz > 0), cached in `cache_dir`
-// (empty: the default railsim cache folder, mim_table_cache_dir). A cache
+// (empty: the default railsim cache folder, core/cache_dir.hpp). A cache
 // file that cannot be read or written is recomputed / skipped, never fatal.
 LayerReduction third_body_reduction_cached(const HertzPatch& patch, const Material& material,
                                            const ThirdBodyLayer& layer, const std::string& cache_dir = "",

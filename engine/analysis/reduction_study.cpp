@@ -16,6 +16,7 @@
 #include <sstream>
 #include <thread>
 
+#include "core/atomic_file.hpp"
 #include "core/errors.hpp"
 #include "engine/analysis/bifurcation_chart.hpp"
 #include "engine/analysis/scenario_record.hpp"
@@ -111,9 +112,7 @@ void check_folder(const std::string& dir, const std::string& fingerprint, bool w
     return;
   }
   if (write) {
-    const std::string tmp = path + ".tmp";
-    std::ofstream(tmp, std::ios::binary) << fingerprint;
-    fs::rename(tmp, path);
+    write_file_atomically(path, fingerprint);
   }
 }
 
@@ -145,7 +144,7 @@ void parallel_for(std::size_t n, int workers, Fn fn) {
 }
 
 void write_ramp_record(const std::string& path, const RampingResult& r) {
-  const std::string tmp = path + ".tmp";
+  const std::string tmp = temporary_path_for(path);
   {
     results::CsvWriter csv(tmp, {"time_s", "speed_kmh", "max_lateral_mm"}, false, 100000, 12);
     for (std::size_t i = 0; i < r.time.size(); ++i) csv.row({r.time[i], r.speed[i] * kKmh, r.max_lateral[i] * 1e3});
