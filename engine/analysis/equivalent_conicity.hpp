@@ -1,12 +1,11 @@
 // Equivalent conicity of a scenario's wheel-rail geometry, for reports.
 //
 // Delta r(y) = r_left(y) - r_right(y) from the geometry's main contact point
-// (engine/contact_geometry.hpp: shift s toward a wheel, so the left wheel sees
-// s = +y and the right wheel s = -y). Equivalent conicity for a harmonic
-// lateral motion y = A sin(wt), as EN 15302:2008 (linear-regression method;
-// the same definition as contact/geometry/conicity.hpp for contact tables):
-// tan(gamma_e) = slope / 2 of the least-squares line Delta r ~ c + slope y
-// over the samples y_i = A sin(2 pi (i + 1/2) / N). For conical wheels it is
+// at zero yaw (engine/contact_geometry.hpp: shift s toward a wheel, so the
+// left wheel sees s = +y and the right wheel s = -y), put through
+// contact/geometry/conicity.hpp's EN 15302:2008 regression for a harmonic
+// lateral motion y = A sin(wt) (the same computation as the scenario's
+// equivalent_conicity_3mm, here at every amplitude 1..6 mm). For conical wheels it is
 // the cone's conicity at every amplitude below the flange. Units: m, [-].
 #pragma once
 
