@@ -17,6 +17,7 @@
 #include "engine/equilibrium.hpp"
 #include "engine/geometry_table.hpp"
 #include "engine/profile_geometry.hpp"
+#include "engine/strip_patches.hpp"
 #include "engine/system.hpp"
 #include "engine/track_input.hpp"
 #include "engine/vehicle_file.hpp"
@@ -309,7 +310,25 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
       a = co.patch_a * std::cbrt(Ns / co.N_ref);
       b = co.patch_b * std::cbrt(Ns / co.N_ref);
     }
-    if (a > 0 && b > 0 && Ns > 0) sc.nominal_patch = contact::hertz_from_semi_axes(a, b, Ns, sc.creep_material);
+    double N = Ns;
+    contact::StripSet set;
+    if (!(a > 0 && b > 0) && Ns > 0 && geo->distributed() &&
+        geo->strips(0.0, 0.0, ProfileGeometry::kGapCutoff, set)) {
+      // Distributed contact (profiles): the most loaded patch of the centred
+      // wheel under its static vertical load, as the wheelset models form it
+      // (engine/strip_patches.hpp: equivalent ellipse, normal load N).
+      StripLoads loads;
+      strip_approach_for_load(set, Ns, 0.0, geo->contact_modulus(), loads);
+      int best = -1;
+      for (int k = 0; k < loads.n; ++k)
+        if (best < 0 || loads.N[k] > loads.N[best]) best = k;
+      if (best >= 0 && loads.N[best] > 0) {
+        a = loads.patch[best].semi_a;
+        b = loads.patch[best].semi_b;
+        N = loads.N[best];
+      }
+    }
+    if (a > 0 && b > 0 && N > 0) sc.nominal_patch = contact::hertz_from_semi_axes(a, b, N, sc.creep_material);
   }
   if (reduction.form != contact::ReductionForm::unset) apply_reduction(sc, reduction, reduction_where);
   if (auto cs = root.find("critical_speed")) sc.critical_speed = load_critical_speed_settings(*cs);

@@ -86,8 +86,10 @@ struct Scenario {
   contact::ReductionSpec reduction;
   // Nominal contact patch: centred wheelset, static load of the first wheel,
   // from the geometry's semi-axes at its reference load (or the scenario's
-  // patch / Hertz curvatures), A and B from Hertz for those semi-axes; Fz = 0
-  // when the scenario gives no patch (prescribed creep coefficients only).
+  // patch / Hertz curvatures); for distributed contact (profiles) the most
+  // loaded strip patch of the centred wheel under that vertical load, Fz its
+  // normal load. A and B from Hertz for those semi-axes; Fz = 0 when the
+  // scenario gives no patch (prescribed creep coefficients only).
   contact::HertzPatch nominal_patch;
   // Material of the creep forces (E from the shear modulus when one is given).
   contact::Material creep_material;

@@ -37,9 +37,14 @@ double slope(railsim::contact::mim::MimSolver& s, const railsim::contact::HertzP
 TEST_CASE("layer factors of the thesis's layer equal the exact solver's creep-curve slopes for the coach's patch",
           "[reduction_study][third_body]") {
   const Scenario sc = load_scenario(railsim::test::source_path("scenarios/manchester_coach_critical_speed.yaml"));
-  // The nominal patch: centred wheelset, static wheel load, the table's semi-axes scaled by (N/N0)^(1/3).
+  // The nominal patch: centred wheelset under its static vertical wheel load;
+  // on the coach's profiles the most loaded strip patch, whose normal load is
+  // the vertical load over the cosine of the tread's contact angle (a few
+  // degrees at the centre: 1 to 1.002 times the vertical load).
   const auto& p = sc.nominal_patch;
-  REQUIRE(p.Fz == Approx(sc.model.wheelsets.front().static_load[0]).epsilon(1e-12));
+  const double Q = sc.model.wheelsets.front().static_load[0];
+  REQUIRE(p.Fz >= Q * (1.0 - 1e-12));
+  REQUIRE(p.Fz == Approx(Q).epsilon(2e-3));
   REQUIRE(p.a > 4e-3);
   REQUIRE(p.a < 8e-3);
   const std::string cache = railsim::test::temp_dir("layer_coach");
@@ -49,7 +54,7 @@ TEST_CASE("layer factors of the thesis's layer equal the exact solver's creep-cu
   REQUIRE(layered.reduction.resolved);
   CHECK(layered.model.coupling.options().reduction.k11 == k.k11);
   CHECK(layered.reduction.form == railsim::contact::ReductionForm::layer);
-  WARN("coach (RSGEO table, centred): layer h = 125 um, G3 = 820 MPa -> k11 " << k.k11 << ", k22 " << k.k22
+  WARN("coach (own profiles, centred): layer h = 125 um, G3 = 820 MPa -> k11 " << k.k11 << ", k22 " << k.k22
                                                                                 << ", k23 " << k.k23);
   // Independent: creep curves of the exact solver with Coulomb friction mu = 0.3
   // at small creepage, with and without the layer (grid 40, the factors' grid).
@@ -71,13 +76,12 @@ TEST_CASE("layer factors of the thesis's layer equal the exact solver's creep-cu
   }
   // The layer lowers the linear critical speed's input but not the friction (no tau_c).
   CHECK(layered.model.coupling.options().material.mu == sc.model.coupling.options().material.mu);
-  // The same scenario's layer from a YAML key gives the same factors (one resolution path).
+  // The same geometry's layer from a YAML key gives the same factors (one resolution path).
   const auto yaml = railsim::config::InputNode::load_string(
       "name: t\nvehicle: " + railsim::test::source_path("vehicles/manchester_coach.yaml") +
           "\ntrack: {name: s, rail_spacing: 1.5, gauge: 1.435, segments: [{type: straight, length: 100}]}\n"
-          "speed_kmh: 200\nduration: 1\nwheelset_model: lateral\ncontact:\n  geometry: {type: table, file: " +
-          railsim::test::source_path("vehicles/contact_tables/RSGEO_S1002_UIC60_1in40.dat") +
-          "}\n  tangential: chopaya\n  material: {E: 2.1e11, nu: 0.28, mu: 0.3}\n  reduction: layer:h=125e-6,G3=820e6\n",
+          "speed_kmh: 200\nduration: 1\nwheelset_model: lateral\ncontact:\n  geometry: {type: profiles, wheel: S1002, "
+          "rail: UIC60, inclination: 1/40, r0: 0.46}\n  tangential: chopaya\n  material: {E: 2.1e11, nu: 0.28, mu: 0.3}\n  reduction: layer:h=125e-6,G3=820e6\n",
       "inline.yaml");
   const Scenario from_yaml = load_scenario(yaml, ".");
   CHECK(from_yaml.model.coupling.options().reduction.k11 == Approx(k.k11).epsilon(1e-12));
