@@ -2,14 +2,23 @@
 // the critical speed of the scenario's vehicle (engine/analysis/critical_speed.hpp).
 //
 // Writes DIR/summary.json (critical_speed_kmh, linear_critical_speed_kmh,
-// method, contact_model, reduction, wall time, and with --reduction the change
-// against the unreduced contact), DIR/bifurcation.csv + bifurcation.png
-// (amplitude against speed, both branches, the linear critical speed marked) or
-// DIR/ramping.csv + ramping.png. Every finished sweep point is on disk at once;
-// a sweep started again in the same DIR skips the finished points. Under
-// `mpirun -np N` the speeds are spread over the ranks.
+// method, the scenario record: mu, geometry and its equivalent conicity,
+// wheelset model, saturation law, reduction as given; the settings with the
+// duration per point; wall time; with --reduction the change against the
+// unreduced contact), DIR/bifurcation.csv + bifurcation.png (amplitude against
+// speed, both branches, markers by what each run did by its end, the fold as a
+// jump, the rule of the critical speed; engine/analysis/bifurcation_chart.hpp)
+// or DIR/ramping.csv + ramping.png (the ramp's start speed named, the point
+// where the critical speed was read marked). Every finished sweep point is on
+// disk at once; a sweep started again in the same DIR skips the finished
+// points. Under `mpirun -np N` the speeds are spread over the ranks.
 // --compare-models runs the analysis once per contact model and tabulates
 // critical speed and wall time per model (DIR/compare_models.csv + .png).
+// --reductions LIST runs the analysis once per reduction-factor entry in one
+// resumable job (engine/analysis/reduction_study.hpp) and writes
+// DIR/reductions.csv, DIR/summary.json, DIR/timing.json (wall times),
+// DIR/reductions.png (the down branches of every entry) and
+// DIR/critical_speed_vs_k.png; each entry's sweep in its own sub-folder.
 #include <spdlog/spdlog.h>
 
 #include <chrono>
@@ -23,7 +32,10 @@
 #include "contact/reduction.hpp"
 #include "contact/registry.hpp"
 #include "core/errors.hpp"
+#include "engine/analysis/bifurcation_chart.hpp"
 #include "engine/analysis/critical_speed.hpp"
+#include "engine/analysis/reduction_study.hpp"
+#include "engine/analysis/scenario_record.hpp"
 #include "engine/analysis/sweep_runner.hpp"
 #include "results/chart.hpp"
 #include "results/csv_writer.hpp"
@@ -42,6 +54,8 @@ struct CriticalSpeedArgs {
   std::string out = "critical_speed";
   std::string model;
   std::string reduction;
+  std::string reductions;  // study: list of entries
+  std::string cache_dir;   // layer factors
   bool compare_models = false;
   std::string models = "coefficients,linear_sat,she,chopaya,polach";
   bool baseline = true;
@@ -56,6 +70,7 @@ struct CriticalSpeedArgs {
   int continuation = -1;  // resolved: 0 off, 1 on
   int threads = 0;
   double ramp_start_kmh = 0.0, ramp_disturbance = 0.0;  // from the scenario only
+  std::string ramp_start_source;                       // where the ramp's start speed came from
 };
 
 // Command-line values where given, else the scenario's settings.
@@ -75,13 +90,18 @@ CriticalSpeedArgs resolve_settings(CriticalSpeedArgs a, const engine::CriticalSp
   pick(a.deceleration, s.deceleration);
   a.continuation = a.continuation_on ? 1 : a.continuation_off ? 0 : (s.continuation ? 1 : 0);
   a.ramp_start_kmh = range_given || s.ramp_start_kmh <= 0 ? a.v_max_kmh : s.ramp_start_kmh;
+  a.ramp_start_source = range_given ? "--v-max"
+                        : s.ramp_start_kmh > 0 ? "the scenario's critical_speed.ramping.v_start_kmh"
+                                               : "v_max_kmh of the scenario's critical_speed section (or the default)";
   a.ramp_disturbance = disturbance_given || s.ramp_disturbance_mm <= 0 ? a.large : s.ramp_disturbance_mm;
   return a;
 }
 
 struct Outcome {
   double critical = NAN, linear = NAN, wall = 0.0;
+  double fold_amplitude = NAN, fold_frequency = NAN;
   std::vector<engine::BifurcationPoint> points;  // bifurcation sweeps only
+  engine::BifurcationOptions bifurcation;        // the sweep's settings
 };
 
 std::string kmh(double v) {
@@ -91,6 +111,9 @@ std::string kmh(double v) {
   return buf;
 }
 
+engine::BifurcationOptions bifurcation_options(const CriticalSpeedArgs& a);
+engine::RampingOptions ramping_options(const CriticalSpeedArgs& a);
+
 Outcome analyse(const engine::Scenario& sc, const CriticalSpeedArgs& a, const std::string& dir,
                 const engine::MpiContext& mpi, Json& summary) {
   fs::create_directories(dir);
@@ -99,74 +122,53 @@ Outcome analyse(const engine::Scenario& sc, const CriticalSpeedArgs& a, const st
   const double v_lo = a.v_min_kmh / 3.6, v_hi = a.v_max_kmh / 3.6;
   out.linear = engine::linear_critical_speed(sc, std::max(1.0, 0.25 * v_lo), 1.5 * v_hi);
   if (a.method == "bifurcation") {
-    engine::BifurcationOptions o;
-    o.v_min = v_lo;
-    o.v_max = v_hi;
-    o.v_step = a.v_step_kmh / 3.6;
-    o.duration = a.duration;
-    o.large_disturbance = a.large * 1e-3;
-    o.small_disturbance = a.small * 1e-3;
-    o.threshold = a.threshold * 1e-3;
-    o.up_branch = a.up_branch;
-    o.continuation = a.continuation == 1;
-    o.threads = a.threads;
-    o.use_mpi = true;
+    const engine::BifurcationOptions o = bifurcation_options(a);
     const auto r = engine::bifurcation_sweep(sc, o, dir + "/bifurcation.csv");
     out.critical = r.nonlinear_critical_speed;
     out.points = r.points;
+    out.fold_amplitude = r.fold_amplitude;
+    out.fold_frequency = r.fold_frequency;
+    out.bifurcation = o;
     summary.set("speed_resolution_kmh", a.v_step_kmh);
+    summary.set("rule", engine::critical_speed_rule(o));
+    results::Json counts = results::Json::object();
+    int n[5] = {0, 0, 0, 0, 0};
+    for (const auto& p : r.points) ++n[static_cast<int>(engine::point_state(p, o))];
+    for (int q = 0; q < 5; ++q) counts.set(engine::point_state_name(static_cast<engine::PointState>(q)), n[q]);
+    summary.set("points_by_state", counts);
+    summary.set("limit_cycle_amplitude_at_fold_mm",
+                std::isnan(r.fold_amplitude) ? results::Json(nullptr) : results::Json(r.fold_amplitude * 1e3));
+    summary.set("limit_cycle_frequency_at_fold_hz",
+                std::isnan(r.fold_frequency) ? results::Json(nullptr) : results::Json(r.fold_frequency));
     if (mpi.rank == 0) {
-      results::Chart c;
-      c.title = "Bifurcation diagram: " + sc.name;
-      c.xlabel = "speed [km/h]";
-      c.ylabel = "settled lateral amplitude [mm]";
-      for (const char* branch : {"down", "up"}) {
-        results::ChartSeries s;
-        s.label = std::string(branch) == "down" ? "from large disturbance (down)" : "from small disturbance (up)";
-        s.style = "line+markers";
-        for (const auto& p : r.points)
-          if (p.branch == branch) s.x.push_back(p.speed * 3.6), s.y.push_back(p.amplitude * 1e3);
-        if (!s.x.empty()) c.series.push_back(s);
-      }
-      // Runs that stopped (a wheel unloaded or left the contact table): their
-      // amplitude is the one reached before the stop, not a settled one.
-      results::ChartSeries stopped{"run stopped (wheel unloaded): counted as hunting", {}, {}, "markers", "k"};
-      for (const auto& p : r.points)
-        if (p.failed) stopped.x.push_back(p.speed * 3.6), stopped.y.push_back(p.amplitude * 1e3);
-      if (!stopped.x.empty()) c.series.push_back(stopped);
-      if (!std::isnan(out.linear)) c.lines.push_back({out.linear * 3.6, "linear critical speed", "r", true});
-      if (!std::isnan(out.critical)) c.lines.push_back({out.critical * 3.6, "nonlinear critical speed", "g", true});
-      c.lines.push_back({a.threshold, "hunting threshold", "0.5", false});
-      results::draw(c, dir + "/bifurcation.png");
+      engine::BifurcationResult copy = r;
+      const std::vector<engine::BifurcationCurve> curves = {
+          {contact::reduction_label(sc.reduction), "tab:blue", &copy, out.linear}};
+      results::draw(engine::bifurcation_chart(curves, o, "Bifurcation diagram: " + sc.name, a.up_branch),
+                    dir + "/bifurcation.png");
     }
   } else {
-    engine::RampingOptions o;
-    o.v_start = a.ramp_start_kmh / 3.6;
-    o.v_end = v_lo;
-    o.deceleration = a.deceleration;
-    o.disturbance = a.ramp_disturbance * 1e-3;
-    o.threshold = a.threshold * 1e-3;
+    const engine::RampingOptions o = ramping_options(a);
+    if (mpi.rank == 0)
+      std::printf("ramping from %.1f km/h (%s) down to %.1f km/h at %.3g m/s^2, after %.3g s at the start speed\n",
+                  a.ramp_start_kmh, a.ramp_start_source.c_str(), a.v_min_kmh, a.deceleration, o.settle_time);
     const auto r = engine::ramping(sc, o);
     out.critical = r.critical_speed;
+    out.fold_amplitude = r.critical_amplitude;
     summary.set("deceleration_m_s2", a.deceleration);
     summary.set("hunting_at_start", r.hunting_at_start);
     summary.set("hunting_at_end", r.hunting_at_end);
+    summary.set("start_speed_kmh", r.start_speed * 3.6);
+    summary.set("start_speed_source", a.ramp_start_source);
+    summary.set("critical_speed_read_at_time_s",
+                std::isnan(r.critical_time) ? results::Json(nullptr) : results::Json(r.critical_time));
+    summary.set("envelope_at_critical_speed_mm", std::isnan(r.critical_amplitude)
+                                                     ? results::Json(nullptr)
+                                                     : results::Json(r.critical_amplitude * 1e3));
     if (mpi.rank == 0) {
       results::CsvWriter csv(dir + "/ramping.csv", {"time_s", "speed_kmh", "max_lateral_mm"}, false, 1000);
-      results::ChartSeries s{"max |lateral shift| of the wheelsets", {}, {}, "line", ""};
-      for (std::size_t i = 0; i < r.time.size(); ++i) {
-        csv.row({r.time[i], r.speed[i] * 3.6, r.max_lateral[i] * 1e3});
-        s.x.push_back(r.speed[i] * 3.6);
-        s.y.push_back(r.max_lateral[i] * 1e3);
-      }
-      results::Chart c;
-      c.title = "Ramping: " + sc.name;
-      c.xlabel = "speed [km/h]";
-      c.ylabel = "max |lateral shift| [mm]";
-      c.series.push_back(s);
-      if (!std::isnan(out.critical)) c.lines.push_back({out.critical * 3.6, "critical speed (ramping)", "g", true});
-      if (!std::isnan(out.linear)) c.lines.push_back({out.linear * 3.6, "linear critical speed", "r", true});
-      results::draw(c, dir + "/ramping.png");
+      for (std::size_t i = 0; i < r.time.size(); ++i) csv.row({r.time[i], r.speed[i] * 3.6, r.max_lateral[i] * 1e3});
+      results::draw(engine::ramping_chart(r, out.linear, o.threshold, "Ramping: " + sc.name), dir + "/ramping.png");
     }
   }
   out.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -181,7 +183,12 @@ void fill_summary(Json& s, const engine::Scenario& sc, const CriticalSpeedArgs& 
   s.set("equivalent_conicity_3mm", sc.equivalent_conicity_3mm);
   s.set("contact_model", sc.model.coupling.options().tangential);
   s.set("contact_description", sc.model.coupling.describe());
-  s.set("reduction", contact::describe_reduction(sc.model.coupling.options().reduction));
+  s.set("reduction", contact::reduction_label(sc.reduction));
+  s.set("mu", sc.model.coupling.options().material.mu);
+  s.set("wheelset_model", engine::wheelset_model_name(sc.model.wheelset_model));
+  s.set("geometry", sc.geometry_description);
+  s.set("saturation_law", engine::saturation_law(sc));
+  s.set("record", engine::scenario_record(sc));
   s.set("critical_speed_kmh", std::isnan(o.critical) ? Json(nullptr) : Json(o.critical * 3.6));
   s.set("linear_critical_speed_kmh", std::isnan(o.linear) ? Json(nullptr) : Json(o.linear * 3.6));
   s.set("speed_range_kmh", results::Json::array().push(a.v_min_kmh).push(a.v_max_kmh));
@@ -189,6 +196,7 @@ void fill_summary(Json& s, const engine::Scenario& sc, const CriticalSpeedArgs& 
   if (a.method == "bifurcation") {
     set.set("v_step_kmh", a.v_step_kmh);
     set.set("duration_s", a.duration);
+    set.set("duration_per_point_s", a.duration);
     set.set("large_disturbance_mm", a.large);
     set.set("small_disturbance_mm", a.small);
     set.set("up_branch", a.up_branch);
@@ -203,21 +211,171 @@ void fill_summary(Json& s, const engine::Scenario& sc, const CriticalSpeedArgs& 
   s.set("wall_time_s", o.wall);
 }
 
+// Sweep settings of the command line / scenario as the engine's options.
+engine::BifurcationOptions bifurcation_options(const CriticalSpeedArgs& a) {
+  engine::BifurcationOptions o;
+  o.v_min = a.v_min_kmh / 3.6;
+  o.v_max = a.v_max_kmh / 3.6;
+  o.v_step = a.v_step_kmh / 3.6;
+  o.duration = a.duration;
+  o.large_disturbance = a.large * 1e-3;
+  o.small_disturbance = a.small * 1e-3;
+  o.threshold = a.threshold * 1e-3;
+  o.up_branch = a.up_branch;
+  o.continuation = a.continuation == 1;
+  o.threads = a.threads;
+  o.use_mpi = true;
+  return o;
+}
+
+engine::RampingOptions ramping_options(const CriticalSpeedArgs& a) {
+  engine::RampingOptions o;
+  o.v_start = a.ramp_start_kmh / 3.6;
+  o.v_end = a.v_min_kmh / 3.6;
+  o.deceleration = a.deceleration;
+  o.disturbance = a.ramp_disturbance * 1e-3;
+  o.threshold = a.threshold * 1e-3;
+  return o;
+}
+
+std::string kmh_cell(double v) {
+  if (!std::isfinite(v)) return "-";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.1f", v * 3.6);
+  return buf;
+}
+
+std::string percent_cell(double v) {
+  if (!std::isfinite(v)) return "-";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%+.1f %%", v);
+  return buf;
+}
+
+// --reductions: the study (engine/analysis/reduction_study.hpp), its files and table.
+int run_reduction_study(const engine::Scenario& base, const CriticalSpeedArgs& a,
+                        const std::vector<contact::ReductionSpec>& entries, const engine::MpiContext& mpi) {
+  engine::ReductionStudyOptions o;
+  o.entries = entries;
+  o.method = a.method;
+  o.bifurcation = bifurcation_options(a);
+  o.ramping = ramping_options(a);
+  o.linear_v_lo = std::max(1.0, 0.25 * a.v_min_kmh / 3.6);
+  o.linear_v_hi = 1.5 * a.v_max_kmh / 3.6;
+  o.out_dir = a.out;
+  o.cache_dir = a.cache_dir;
+  o.tangential_model = a.model;
+  o.threads = a.threads;
+  if (mpi.rank == 0 && a.method == "ramping")
+    std::printf("ramping from %.1f km/h (%s) down to %.1f km/h at %.3g m/s^2, every entry\n", a.ramp_start_kmh,
+                a.ramp_start_source.c_str(), a.v_min_kmh, a.deceleration);
+  const engine::ReductionStudyResult r = engine::reduction_study(base, o);
+  if (mpi.rank != 0) return kExitSuccess;
+
+  // reductions.csv: one row per entry (no wall times: a resumed job writes the same file).
+  {
+    results::CsvWriter csv(a.out + "/reductions.csv",
+                           {"entry", "label", "given", "form", "k11", "k22", "k23", "mu", "critical_speed_kmh",
+                            "linear_critical_speed_kmh", "critical_speed_change_percent",
+                            "linear_critical_speed_change_percent", "limit_cycle_amplitude_at_fold_mm",
+                            "limit_cycle_frequency_at_fold_hz", "state_one_step_below", "folder"},
+                           false, 1000);
+    for (std::size_t i = 0; i < r.entries.size(); ++i) {
+      const auto& e = r.entries[i];
+      const auto& spec = e.scenario.reduction;
+      csv.cell(static_cast<long>(i))
+          .cell(e.label)
+          .cell(spec.text)
+          .cell(contact::reduction_form_name(spec.form))
+          .cell(spec.k.k11)
+          .cell(spec.k.k22)
+          .cell(spec.k.k23)
+          .cell(e.scenario.model.coupling.options().material.mu)
+          .cell(e.critical * 3.6)
+          .cell(e.linear * 3.6)
+          .cell(e.change_percent)
+          .cell(e.linear_change_percent)
+          .cell(e.fold_amplitude * 1e3)
+          .cell(e.fold_frequency)
+          .cell(e.below_state)
+          .cell(e.folder);
+      csv.end_row();
+    }
+  }
+  engine::reduction_study_summary(base, o, r).write_file(a.out + "/summary.json");
+  engine::reduction_study_timing(r).write_file(a.out + "/timing.json");
+  results::draw(engine::reductions_chart(base, o, r), a.out + "/reductions.png");
+  results::draw(engine::critical_speed_vs_k_chart(base, r), a.out + "/critical_speed_vs_k.png");
+  for (std::size_t i = 0; i < r.entries.size(); ++i) {
+    const auto& e = r.entries[i];
+    const std::string dir = a.out + "/" + e.folder;
+    if (a.method == "bifurcation") {
+      const std::vector<engine::BifurcationCurve> curves = {{e.label, engine::reduction_entry_color(i), &e.bifurcation,
+                                                             e.linear}};
+      results::draw(engine::bifurcation_chart(curves, o.bifurcation, "Bifurcation diagram: " + base.name + ", " + e.label,
+                                              a.up_branch),
+                    dir + "/bifurcation.png");
+    } else {
+      results::draw(engine::ramping_chart(e.ramping, e.linear, o.ramping.threshold,
+                                          "Ramping: " + base.name + ", " + e.label),
+                    dir + "/ramping.png");
+    }
+  }
+
+  std::printf("\nrailsim critical speed against the reduction factors: %s\n", base.name.c_str());
+  std::printf("  vehicle %s, %s wheelset model, %s\n  contact %s, mu %.3g\n  method  %s", base.model.vehicle_name.c_str(),
+              engine::wheelset_model_name(base.model.wheelset_model), base.geometry_description.c_str(),
+              base.model.coupling.options().tangential.c_str(), base.model.coupling.options().material.mu,
+              a.method.c_str());
+  if (a.method == "bifurcation")
+    std::printf(" over %.0f..%.0f km/h, step %.3g km/h, %.3g s per point%s\n", a.v_min_kmh, a.v_max_kmh, a.v_step_kmh,
+                a.duration, a.continuation == 1 ? ", with continuation" : "");
+  else
+    std::printf(" from %.1f km/h (%s) at %.3g m/s^2\n", a.ramp_start_kmh, a.ramp_start_source.c_str(),
+                a.deceleration);
+  std::printf("\n  %-38s %6s %6s %6s %10s %8s %10s %8s %9s\n", "entry", "k11", "k22", "k23", "V_NL km/h", "change",
+              "V_L km/h", "change", "fold mm");
+  for (const auto& e : r.entries) {
+    const auto& k = e.scenario.reduction.k;
+    char fold[32] = "-";
+    if (std::isfinite(e.fold_amplitude)) std::snprintf(fold, sizeof fold, "%.2f", e.fold_amplitude * 1e3);
+    const bool bound = e.below_state == "decaying" || e.below_state == "growing";
+    std::printf("  %-38s %6.3g %6.3g %6.3g %10s %8s %10s %8s %9s%s%s\n", e.label.substr(0, 38).c_str(), k.k11, k.k22,
+                k.k23, (std::string(bound ? "<=" : "") + kmh_cell(e.critical)).c_str(),
+                percent_cell(e.change_percent).c_str(), kmh_cell(e.linear).c_str(),
+                percent_cell(e.linear_change_percent).c_str(), fold,
+                e.added_reference ? "  (added as the k = 1 reference)" : "",
+                bound ? "  (upper bound: the run one step below was still decaying)" : "");
+  }
+  std::printf("\n  wall time %.1f s\n  results   %s/reductions.csv, summary.json, reductions.png, "
+              "critical_speed_vs_k.png\n\n",
+              r.wall_time, a.out.c_str());
+  return kExitSuccess;
+}
+
 int run_critical_speed(const CriticalSpeedArgs& args) {
   const engine::MpiContext mpi = engine::mpi_context();
   engine::Scenario base = engine::load_scenario(args.scenario);
   const CriticalSpeedArgs a = resolve_settings(args, base.critical_speed);
   check_speed_range(a.v_min_kmh, a.v_max_kmh, a.v_step_kmh);
-  contact::ReductionFactors k;
-  const contact::ReductionFactors* kp = nullptr;
-  if (!a.reduction.empty()) {
-    k = contact::parse_reduction(a.reduction, "--reduction");
-    kp = &k;
-  }
+  if (!a.reduction.empty() && !a.reductions.empty())
+    throw InputError("--reduction and --reductions: give one of them (--reductions runs every entry of its list)");
+  if (!a.reductions.empty() && a.compare_models)
+    throw InputError("--reductions and --compare-models: give one of them");
+  contact::ReductionSpec spec;
+  const bool reduction_given = !a.reduction.empty();
+  if (reduction_given) spec = contact::parse_reduction_spec(a.reduction, "--reduction");
+  std::vector<contact::ReductionSpec> study_entries;
+  if (!a.reductions.empty()) study_entries = contact::parse_reduction_list(a.reductions, "--reductions");
   if (!a.model.empty()) contact::make_tangential_model(a.model == "coefficients" ? "linear" : a.model);  // validates the name
   std::error_code ec;
   fs::create_directories(a.out, ec);
   if (ec) throw InputError("--out " + a.out + ": cannot create the folder (" + ec.message() + ")");
+  if (!study_entries.empty()) return run_reduction_study(base, a, study_entries, mpi);
+  // The reduction resolved once (a layer's factors for this scenario's patch).
+  if (reduction_given) base = engine::with_reduction(base, spec, "--reduction", a.cache_dir);
+  const contact::ReductionFactors k = base.reduction.k;
+  const contact::ReductionFactors* kp = reduction_given ? &base.reduction.k : nullptr;
 
   if (a.compare_models) {
     std::vector<std::string> names;
@@ -232,7 +390,7 @@ int run_critical_speed(const CriticalSpeedArgs& args) {
     results::ChartSeries pts{"critical speed", {}, {}, "markers", ""};
     results::Chart chart;
     for (std::size_t i = 0; i < names.size(); ++i) {
-      const engine::Scenario sc = engine::with_contact(base, names[i], kp);
+      const engine::Scenario sc = engine::with_contact(base, names[i], nullptr);
       spdlog::info("compare-models: {} ({}/{})", names[i], i + 1, names.size());
       Json s = Json::object();
       const Outcome o = analyse(sc, a, a.out + "/" + names[i], mpi, s);
@@ -264,13 +422,13 @@ int run_critical_speed(const CriticalSpeedArgs& args) {
     return kExitSuccess;
   }
 
-  const engine::Scenario sc = engine::with_contact(base, a.model, kp);
+  const engine::Scenario sc = engine::with_contact(base, a.model, nullptr);
   Json summary = Json::object();
   const Outcome o = analyse(sc, a, a.out, mpi, summary);
   fill_summary(summary, sc, a, o);
   // With reduced creep coefficients, also the unreduced contact for comparison.
   Outcome ref;
-  const bool with_baseline = kp && a.baseline && contact::describe_reduction(k) != "none";
+  const bool with_baseline = kp && a.baseline && !(k.k11 == 1.0 && k.k22 == 1.0 && k.k23 == 1.0);
   if (with_baseline) {
     const contact::ReductionFactors none;
     const engine::Scenario sc0 = engine::with_contact(base, a.model, &none);
@@ -286,22 +444,19 @@ int run_critical_speed(const CriticalSpeedArgs& args) {
     summary.set("unreduced", b);
     if (mpi.rank == 0 && a.method == "bifurcation") {
       // Both down branches on one chart: how far the reduction moves the hunting onset.
-      results::Chart c;
-      c.title = "Effect of the creep-coefficient reduction: " + sc.name;
-      c.xlabel = "speed [km/h]";
-      c.ylabel = "settled lateral amplitude, down branch [mm]";
-      const std::pair<const Outcome*, std::string> cases[] = {
-          {&ref, "unreduced (k = 1)"}, {&o, "reduction " + contact::describe_reduction(k)}};
-      const char* colours[] = {"tab:blue", "tab:red"};
-      for (int i = 0; i < 2; ++i) {
-        results::ChartSeries s{cases[i].second, {}, {}, "line+markers", colours[i]};
-        for (const auto& p : cases[i].first->points)
-          if (p.branch == "down") s.x.push_back(p.speed * 3.6), s.y.push_back(p.amplitude * 1e3);
-        c.series.push_back(s);
-        if (!std::isnan(cases[i].first->critical))
-          c.lines.push_back({cases[i].first->critical * 3.6, "critical speed, " + cases[i].second, colours[i], true});
-      }
-      results::draw(c, a.out + "/bifurcation_reduction.png");
+      engine::BifurcationResult r0, r1;
+      r0.points = ref.points;
+      r0.nonlinear_critical_speed = ref.critical;
+      r0.fold_amplitude = ref.fold_amplitude;
+      r1.points = o.points;
+      r1.nonlinear_critical_speed = o.critical;
+      r1.fold_amplitude = o.fold_amplitude;
+      const std::vector<engine::BifurcationCurve> curves = {
+          {"unreduced (k = 1)", "tab:blue", &r0, ref.linear},
+          {"reduction " + contact::reduction_label(sc.reduction), "tab:red", &r1, o.linear}};
+      results::draw(engine::bifurcation_chart(curves, o.bifurcation,
+                                              "Effect of the creep-coefficient reduction: " + sc.name, false),
+                    a.out + "/bifurcation_reduction.png");
     }
   }
   if (mpi.rank == 0) {
@@ -309,7 +464,11 @@ int run_critical_speed(const CriticalSpeedArgs& args) {
     std::printf("\nrailsim critical speed: %s\n", sc.name.c_str());
     std::printf("  vehicle            %s\n", sc.model.vehicle_name.c_str());
     std::printf("  contact            %s\n", sc.model.coupling.describe().c_str());
-    std::printf("  method             %s over %.0f..%.0f km/h\n", a.method.c_str(), a.v_min_kmh, a.v_max_kmh);
+    if (a.method == "ramping")
+      std::printf("  method             ramping from %.1f km/h (%s) down to %.0f km/h\n", a.ramp_start_kmh,
+                  a.ramp_start_source.c_str(), a.v_min_kmh);
+    else
+      std::printf("  method             %s over %.0f..%.0f km/h\n", a.method.c_str(), a.v_min_kmh, a.v_max_kmh);
     std::printf("  critical speed     %s\n", kmh(o.critical).c_str());
     std::printf("  linear crit. speed %s (eigenvalues)\n", kmh(o.linear).c_str());
     if (with_baseline) {
@@ -338,7 +497,15 @@ void register_critical_speed(CLI::App& app, CommandRunner& run) {
                   "Tangential contact model overriding the scenario (coefficients or a registry name: " +
                       contact::tangential_model_names() + ")");
   cmd->add_option("--reduction", a->reduction,
-                  "Reduction factors: none, elastic_fe, elastoplastic_fe, third_body, one number k, or k11,k22,k23");
+                  "Reduction factors: none, elastic_fe, elastoplastic_fe, third_body, one number k, k11,k22,k23, or a "
+                  "third-body layer layer:h=<m>,G3=<Pa>[,tau_c=<Pa>] (factors computed by the exact solver for the "
+                  "scenario's patch)");
+  cmd->add_option("--reductions", a->reductions,
+                  "Study: the analysis once per entry of this list of --reduction forms, in one resumable job "
+                  "(e.g. 1,0.9,0.8,0.7,0.6,0.5,elastic_fe,elastoplastic_fe,layer:h=125e-6,G3=820e6; a triple in "
+                  "brackets (0.72,0.56,0.56), or entries separated by ';')");
+  cmd->add_option("--cache-dir", a->cache_dir,
+                  "Cache folder of computed layer factors (default: $RAILSIM_CACHE_DIR, else ~/.cache/railsim)");
   cmd->add_flag("--compare-models", a->compare_models, "Run once per contact model (see --models) and tabulate");
   cmd->add_option("--models", a->models, "Models for --compare-models, comma-separated")->capture_default_str();
   cmd->add_flag("!--no-baseline", a->baseline, "With --reduction, skip the unreduced comparison run");

@@ -26,5 +26,6 @@ void register_geometry(CLI::App& app, CommandRunner& run);
 void register_conicity(CLI::App& app, CommandRunner& run);
 void register_track(CLI::App& app, CommandRunner& run);
 void register_wheelset_contact(CLI::App& app, CommandRunner& run);
+void register_compare_yq(CLI::App& app, CommandRunner& run);
 
 }  // namespace railsim::cli

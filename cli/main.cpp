@@ -33,6 +33,7 @@ int main(int argc, char** argv) {
   railsim::cli::register_conicity(app, run);
   railsim::cli::register_track(app, run);
   railsim::cli::register_wheelset_contact(app, run);
+  railsim::cli::register_compare_yq(app, run);
 
   try {
     app.parse(argc, argv);

@@ -17,6 +17,7 @@
 #include "engine/equilibrium.hpp"
 #include "engine/geometry_table.hpp"
 #include "engine/profile_geometry.hpp"
+#include "engine/strip_patches.hpp"
 #include "engine/system.hpp"
 #include "engine/track_input.hpp"
 #include "engine/vehicle_file.hpp"
@@ -221,7 +222,13 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
   co.saturation = c.string_or("saturation", "none");
   if (co.saturation != "none" && co.saturation != "she")
     c.at("saturation").fail("expected 'none' or 'she' (got '" + co.saturation + "')");
-  if (auto r = c.find("reduction")) co.reduction = contact::parse_reduction(r->as_string(), r->where() + ": key 'reduction'");
+  contact::ReductionSpec reduction;
+  std::string reduction_where;
+  if (auto r = c.find("reduction")) {
+    reduction_where = r->where() + ": key 'reduction'";
+    reduction = contact::parse_reduction_spec(r->as_string(), reduction_where);
+    if (reduction.resolved) co.reduction = reduction.k;
+  }
   if (auto f = c.find("creep_coefficients")) {
     f->allow_only({"f11", "f22", "f23", "f33", "N_ref"});
     co.f11 = f->positive("f11");
@@ -289,6 +296,41 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
   }
   m.coupling = WheelRailCoupling(co);
   for (auto& w : m.wheelsets) w.hertz_q0[0] = w.hertz_q0[1] = q0;
+  // Nominal patch (centred wheelset, static load of the first wheel) for layer factors and reports.
+  sc.creep_material = co.shear_modulus > 0 ? contact::Material::from_shear_modulus(co.shear_modulus, co.material.nu,
+                                                                                   co.material.mu)
+                                           : co.material;
+  {
+    const double Ns = m.wheelsets.empty() ? 0.0 : m.wheelsets.front().static_load[0];
+    double a = 0.0, b = 0.0;
+    if (c0.semi_a > 0 && c0.N0 > 0) {
+      a = c0.semi_a * std::cbrt(Ns / c0.N0);
+      b = c0.semi_b * std::cbrt(Ns / c0.N0);
+    } else if (co.patch_a > 0 && co.N_ref > 0) {
+      a = co.patch_a * std::cbrt(Ns / co.N_ref);
+      b = co.patch_b * std::cbrt(Ns / co.N_ref);
+    }
+    double N = Ns;
+    contact::StripSet set;
+    if (!(a > 0 && b > 0) && Ns > 0 && geo->distributed() &&
+        geo->strips(0.0, 0.0, ProfileGeometry::kGapCutoff, set)) {
+      // Distributed contact (profiles): the most loaded patch of the centred
+      // wheel under its static vertical load, as the wheelset models form it
+      // (engine/strip_patches.hpp: equivalent ellipse, normal load N).
+      StripLoads loads;
+      strip_approach_for_load(set, Ns, 0.0, geo->contact_modulus(), loads);
+      int best = -1;
+      for (int k = 0; k < loads.n; ++k)
+        if (best < 0 || loads.N[k] > loads.N[best]) best = k;
+      if (best >= 0 && loads.N[best] > 0) {
+        a = loads.patch[best].semi_a;
+        b = loads.patch[best].semi_b;
+        N = loads.N[best];
+      }
+    }
+    if (a > 0 && b > 0 && N > 0) sc.nominal_patch = contact::hertz_from_semi_axes(a, b, N, sc.creep_material);
+  }
+  if (reduction.form != contact::ReductionForm::unset) apply_reduction(sc, reduction, reduction_where);
   if (auto cs = root.find("critical_speed")) sc.critical_speed = load_critical_speed_settings(*cs);
   sc.running_safety = root.find("running_safety");
   sc.x0 = Eigen::VectorXd::Zero(m.n_states);
@@ -321,6 +363,29 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
     }
   }
   return sc;
+}
+
+void apply_reduction(Scenario& sc, contact::ReductionSpec spec, const std::string& where,
+                     const std::string& cache_dir) {
+  CouplingOptions o = sc.model.coupling.options();
+  o.material.mu = sc.creep_material.mu;  // the scenario's friction; only a layer's tau_c lowers it
+  sc.layer = {};
+  if (spec.form == contact::ReductionForm::layer) {
+    if (!(sc.nominal_patch.Fz > 0.0))
+      throw InputError(where + ": a third-body layer needs the scenario's contact patch (a geometry table or "
+                       "profiles with semi-axes, or 'patch' / 'curvatures' for conical wheels); this scenario "
+                       "prescribes creep coefficients only");
+    contact::Material m = sc.creep_material;
+    m.mu = o.material.mu;
+    sc.layer = contact::mim::third_body_reduction_cached(sc.nominal_patch, m, spec.layer, cache_dir);
+    spec.k = sc.layer.k;
+    spec.resolved = true;
+    contact::check_reduction(spec.k, where + " (factors computed for the layer)");
+    if (sc.layer.mu_limit > 0.0 && sc.layer.mu_limit < o.material.mu) o.material.mu = sc.layer.mu_limit;
+  }
+  o.reduction = spec.k;
+  sc.reduction = spec;
+  sc.model.coupling = WheelRailCoupling(o);
 }
 
 }  // namespace railsim::engine

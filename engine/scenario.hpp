@@ -20,7 +20,7 @@
 //     tangential: coefficients | <contact registry name>
 //     saturation: none | she            # coefficients only
 //     material: {E: 2.1e11, nu: 0.28, mu: 0.3, shear_modulus: 8.2e10}
-//     reduction: none                   # contact/reduction.hpp syntax
+//     reduction: none                   # contact/reduction.hpp syntax, also layer:h=125e-6,G3=820e6
 //     creep_coefficients: {f11: 1e7, f22: 1e7, f23: 0, f33: 0, N_ref: 0}
 //     patch: {a: 6e-3, b: 4e-3, N_ref: 60000}
 //     spin: true
@@ -43,6 +43,7 @@
 
 #include "config/yaml_input.hpp"
 #include "contact/geometry/wheel_rail_geometry.hpp"
+#include "contact/reduction.hpp"
 #include "engine/integrator.hpp"
 #include "engine/model.hpp"
 
@@ -80,6 +81,20 @@ struct Scenario {
   // Largest acceleration of the start state [m/s^2, rad/s^2] (equilibrium.hpp).
   double start_residual = 0.0;
   CriticalSpeedSettings critical_speed;
+  // The reduction factors as the user gave them (key contact.reduction),
+  // resolved: model.coupling carries spec.k.
+  contact::ReductionSpec reduction;
+  // Nominal contact patch: centred wheelset, static load of the first wheel,
+  // from the geometry's semi-axes at its reference load (or the scenario's
+  // patch / Hertz curvatures); for distributed contact (profiles) the most
+  // loaded strip patch of the centred wheel under that vertical load, Fz its
+  // normal load. A and B from Hertz for those semi-axes; Fz = 0 when the
+  // scenario gives no patch (prescribed creep coefficients only).
+  contact::HertzPatch nominal_patch;
+  // Material of the creep forces (E from the shear modulus when one is given).
+  contact::Material creep_material;
+  // A layer's computed factors (reduction.form == layer), else default.
+  contact::mim::LayerReduction layer;
 };
 
 Scenario load_scenario(const std::string& path);
@@ -88,5 +103,14 @@ Scenario load_scenario(const std::string& path);
 // `radius_key`), each checked against its admissible range.
 contact::TrackSetup read_track_setup(const config::InputNode& node, const std::string& radius_key);
 Scenario load_scenario(const config::InputNode& root, const std::string& base_dir);
+
+// Use `spec` as the scenario's reduction factors: presets and numbers as given;
+// a third-body layer computed by the exact solver for nominal_patch (cached in
+// cache_dir, empty = default cache folder), and with a limiting stress tau_c
+// the friction coefficient of the creep forces lowered to the layer's limit
+// (contact/mim/third_body.hpp). Throws InputError naming `where` when a layer
+// has no patch to work on.
+void apply_reduction(Scenario& sc, contact::ReductionSpec spec, const std::string& where,
+                     const std::string& cache_dir = "");
 
 }  // namespace railsim::engine

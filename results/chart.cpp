@@ -3,6 +3,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 
@@ -33,7 +34,9 @@ std::string write_spec(const Chart& chart, const std::string& png_path) {
   spec.set("ylabel", chart.ylabel);
   spec.set("logx", chart.logx);
   spec.set("logy", chart.logy);
-  spec.set("output", png_path);
+  // The PNG's file name only: the description does not depend on the folder it
+  // is in (the renderer puts the PNG next to it), so equal charts have equal files.
+  spec.set("output", std::filesystem::path(png_path).filename().string());
   Json series = Json::array();
   for (const auto& s : chart.series) {
     Json js = Json::object();
@@ -97,12 +100,27 @@ std::string write_spec(const Chart& chart, const std::string& png_path) {
   for (const auto& p : chart.panels) panels.push(p);
   spec.set("panels", panels);
   spec.set("panel_columns", chart.panel_columns);
+  if (!chart.note.empty()) spec.set("note", chart.note);
+  if (chart.y_from_zero) spec.set("y_from_zero", true);
+  if (chart.width > 0 && chart.height > 0) spec.set("size", Json::array().push(chart.width).push(chart.height));
+  if (!chart.legend_location.empty()) spec.set("legend_location", chart.legend_location);
   const std::string spec_path = png_path + ".json";
   spec.write_file(spec_path);
   return spec_path;
 }
 
 }  // namespace
+
+std::string custom_style(const std::string& marker, const std::string& line, bool open, double size) {
+  std::string s = "custom:marker=" + marker + ";line=" + line;
+  if (open) s += ";open";
+  if (size > 0) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, ";size=%g", size);
+    s += buf;
+  }
+  return s;
+}
 
 bool draw_all(const std::vector<std::pair<const Chart*, std::string>>& charts) {
   if (charts.empty()) return true;

@@ -22,7 +22,8 @@ namespace railsim::results {
 struct ChartSeries {
   std::string label;
   std::vector<double> x, y;
-  // "line", "dashed", "dotted", "faint" (thin, light line), "markers", "crosses", "line+markers", "step"
+  // "line", "dashed", "dotted", "faint" (thin, light line), "markers", "crosses", "line+markers", "step", or an
+  // explicit style from custom_style(). A series without points but with a label only adds a legend entry.
   std::string style = "line";
   std::string color;           // matplotlib colour; empty = automatic
   int panel = 0;               // sub-plot index when Chart::panels is used
@@ -46,6 +47,12 @@ struct ChartSpan {
   std::string hatch;           // matplotlib hatch ("//", "xx"); empty = none
 };
 
+// Explicit style: matplotlib marker ("o", "v", "^", "x", "s", "*", ...; empty =
+// none), line style ("-", "--", ":"; empty = no line), hollow markers, marker
+// size in points (0 = default). Written "custom:marker=o;line=-;open;size=5".
+std::string custom_style(const std::string& marker, const std::string& line, bool open = false,
+                         double size = 0.0);
+
 struct ChartLine {
   double value = 0.0;       // x of a vertical line, or y of a horizontal one
   std::string label;
@@ -68,6 +75,11 @@ struct Chart {
   // Small multiples: one sub-plot per title (empty = a single plot).
   std::vector<std::string> panels;
   int panel_columns = 0;  // columns of the panel grid; 0 = about square
+  // A text box in the plot (e.g. the rule a result was read with); empty = none.
+  std::string note;
+  bool y_from_zero = false;  // start the y axis at 0
+  std::string legend_location;  // matplotlib location of an inside legend ("best" when empty)
+  double width = 0.0, height = 0.0;  // figure size [inch] of a single plot; 0 = 8 x 5 (11 x 5 with the legend outside)
 };
 
 // Render `chart` to `png_path` (also writes png_path + ".json"). Returns true

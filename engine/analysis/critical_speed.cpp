@@ -93,7 +93,8 @@ PointOutcome run_point(const Scenario& base, double speed, const Eigen::VectorXd
 // the start of the decay rather than the threshold crossing removes most of the
 // lag of a finite deceleration (True 2013).
 double collapse_speed(const std::vector<double>& t, const std::vector<double>& v, const std::vector<double>& env,
-                      std::size_t first, const RampingOptions& o, bool& hunting_at_end) {
+                      std::size_t first, const RampingOptions& o, bool& hunting_at_end, long& at) {
+  at = -1;
   std::vector<std::size_t> peaks;
   for (std::size_t i = std::max<std::size_t>(first, 1); i + 1 < env.size(); ++i)
     if (env[i] >= env[i - 1] && env[i] > env[i + 1]) peaks.push_back(i);
@@ -124,6 +125,7 @@ double collapse_speed(const std::vector<double>& t, const std::vector<double>& v
     if (j == k || rate(j, k) > -o.collapse_rate) break;
     k = j;
   }
+  at = static_cast<long>(peaks[k]);
   return v[peaks[k]];
 }
 
@@ -141,13 +143,54 @@ bool is_hunting(const BifurcationPoint& p, const BifurcationOptions& o) {
   return p.amplitude > o.threshold && p.growth > -o.decay_tolerance;
 }
 
+PointState point_state(const BifurcationPoint& p, const BifurcationOptions& o) {
+  if (p.failed) return PointState::stopped;
+  if (!(p.amplitude > o.threshold)) return PointState::centred;
+  if (p.growth > o.decay_tolerance) return PointState::growing;
+  if (p.growth < -o.decay_tolerance) return PointState::decaying;
+  return PointState::settled;
+}
+
+const char* point_state_name(PointState s) {
+  switch (s) {
+    case PointState::settled: return "settled";
+    case PointState::growing: return "growing";
+    case PointState::decaying: return "decaying";
+    case PointState::centred: return "centred";
+    case PointState::stopped: return "stopped";
+  }
+  return "settled";
+}
+
 Scenario with_contact(const Scenario& scenario, const std::string& tangential_model,
                       const contact::ReductionFactors* reduction) {
   Scenario s = scenario;
   CouplingOptions o = s.model.coupling.options();
   if (!tangential_model.empty()) o.tangential = tangential_model;
-  if (reduction) o.reduction = *reduction;
+  if (reduction) {
+    o.reduction = *reduction;
+    o.material.mu = s.creep_material.mu;  // a layer's friction limit goes with the layer
+    contact::ReductionSpec spec;
+    spec.form = (reduction->k11 == reduction->k22 && reduction->k22 == reduction->k23) ? contact::ReductionForm::uniform
+                                                                                     : contact::ReductionForm::factors;
+    spec.k = *reduction;
+    spec.text = contact::describe_reduction(*reduction);
+    s.reduction = spec;
+    s.layer = {};
+  }
   s.model.coupling = WheelRailCoupling(o);
+  return s;
+}
+
+Scenario with_reduction(const Scenario& scenario, const contact::ReductionSpec& spec, const std::string& where,
+                        const std::string& cache_dir, const std::string& tangential_model) {
+  Scenario s = scenario;
+  if (!tangential_model.empty()) {
+    CouplingOptions o = s.model.coupling.options();
+    o.tangential = tangential_model;
+    s.model.coupling = WheelRailCoupling(o);
+  }
+  apply_reduction(s, spec, where, cache_dir);
   return s;
 }
 
@@ -185,7 +228,7 @@ BifurcationResult bifurcation_sweep(const Scenario& scenario, const BifurcationO
   so.result_columns = {"speed_m_s", "down", "amplitude_m", "frequency_hz", "growth", "failed"};
   so.threads = o.threads;
   so.use_mpi = o.use_mpi;
-  so.label = "bifurcation sweep";
+  so.label = o.label;
   auto fn = [&](const SweepPoint& p) {
     const double v = p.params[0];
     const bool down = p.params[1] > 0.5;
@@ -223,9 +266,12 @@ BifurcationResult collect(const std::vector<SweepResult>& rows, const Bifurcatio
   std::vector<const BifurcationPoint*> down;
   for (const auto& p : res.points)
     if (p.branch == "down") down.push_back(&p);
+  res.fold_amplitude = res.fold_frequency = kNaN;
   for (auto it = down.rbegin(); it != down.rend(); ++it) {
     if (!is_hunting(**it, o)) break;
     res.nonlinear_critical_speed = (*it)->speed;
+    res.fold_amplitude = (*it)->amplitude;
+    res.fold_frequency = (*it)->frequency;
   }
   return res;
 }
@@ -314,7 +360,7 @@ BifurcationResult continuation_sweep(const Scenario& scenario, const Bifurcation
   so.output = points_csv + ".sweep.csv";
   so.result_columns = columns;
   so.threads = o.threads;
-  so.label = "bifurcation sweep";
+  so.label = o.label;
   std::vector<SweepResult> rows = run_sweep(points, [&](const SweepPoint& p) {
     const double v = p.params[0];
     const bool down = p.params[1] > 0.5;
@@ -355,7 +401,7 @@ BifurcationResult continuation_sweep(const Scenario& scenario, const Bifurcation
       const std::string key = "chain:" + target.key.substr(target.key.find(':') + 1);
       auto done = std::find_if(chain.begin(), chain.end(), [&](const SweepResult& r) { return r.key == key; });
       if (done == chain.end() || (is_hunting(point_of(*done), o) && !point_of(*done).failed && !states.find(key))) {
-        spdlog::info("bifurcation sweep: following the branch down to {:.1f} km/h", v * 3.6);
+        spdlog::info("{}: following the branch down to {:.1f} km/h", o.label, v * 3.6);
         Eigen::VectorXd x_end;
         const PointOutcome r = run_point(scenario, v, *states.find(from), o, &x_end);
         if (!r.failed) states.put(key, x_end);
@@ -381,6 +427,8 @@ RampingResult ramping(const Scenario& scenario, const RampingOptions& o) {
   if (!(o.v_start > o.v_end && o.v_end > 0.0 && o.deceleration > 0.0))
     throw InputError("ramping: need v_start > v_end > 0 and deceleration > 0");
   RampingResult res;
+  res.start_speed = o.v_start;
+  res.critical_time = res.critical_amplitude = kNaN;
   const auto t0 = std::chrono::steady_clock::now();
   const Scenario sc = at_speed(scenario, o.v_start, 0.0);
   const std::size_t nw = sc.model.wheelsets.size();
@@ -428,7 +476,12 @@ RampingResult ramping(const Scenario& scenario, const RampingOptions& o) {
     const double duration = (o.v_start - o.v_end) / o.deceleration;
     const std::size_t first_ramp = t_all.size();
     simulate(ramp.model, ramp.integrator, x_end, duration, o.output_interval, record(ramp, o.settle_time));
-    res.critical_speed = collapse_speed(t_all, v_all, ymax_all, first_ramp, o, res.hunting_at_end);
+    long at = -1;
+    res.critical_speed = collapse_speed(t_all, v_all, ymax_all, first_ramp, o, res.hunting_at_end, at);
+    if (at >= 0) {
+      res.critical_time = t_all[static_cast<std::size_t>(at)];
+      res.critical_amplitude = ymax_all[static_cast<std::size_t>(at)];
+    }
   }
   res.time = std::move(t_all);
   res.speed = std::move(v_all);

@@ -53,6 +53,7 @@ struct BifurcationOptions {
   bool continuation = false;
   int threads = 0;                   // 0: all cores
   bool use_mpi = false;
+  std::string label = "bifurcation sweep";  // progress messages
 };
 
 struct BifurcationPoint {
@@ -69,11 +70,25 @@ struct BifurcationResult {
   std::vector<BifurcationPoint> points;  // sorted: branch, then speed
   double nonlinear_critical_speed = 0.0; // [m/s]; NaN when no hunting was found in the range
   double resolution = 0.0;               // speed step of the sweep [m/s]
+  // Limit cycle at the fold: amplitude [m] and frequency [Hz] of the down
+  // branch at nonlinear_critical_speed (the lowest hunting speed); NaN without one.
+  double fold_amplitude = 0.0, fold_frequency = 0.0;
 };
 
 // Hunting: the run derailed, or a settled amplitude above the threshold that is
 // not decaying by more than decay_tolerance over the tail.
 bool is_hunting(const BifurcationPoint& p, const BifurcationOptions& o);
+
+// What a point's run did by its end (for charts and reports), with the
+// threshold and decay_tolerance of `o`:
+//   settled   amplitude above the threshold, |growth| <= decay_tolerance: a limit cycle;
+//   growing   amplitude above the threshold, still growing (counts as hunting);
+//   decaying  amplitude above the threshold, still decaying (not hunting);
+//   centred   amplitude at or below the threshold (back to the centred running);
+//   stopped   the run stopped (wheel unloaded, left the geometry): counts as hunting.
+enum class PointState { settled, growing, decaying, centred, stopped };
+PointState point_state(const BifurcationPoint& p, const BifurcationOptions& o);
+const char* point_state_name(PointState s);
 
 // Run (or resume) the sweep; results are written to `points_csv` as they finish.
 BifurcationResult bifurcation_sweep(const Scenario& scenario, const BifurcationOptions& options,
@@ -91,9 +106,13 @@ struct RampingOptions {
 };
 
 struct RampingResult {
-  double critical_speed = 0.0;       // [m/s]; NaN: no hunting at v_start; v_end: still hunting at the end
+  double critical_speed = 0.0;       // [m/s]; NaN: no hunting at v_start or still hunting at the end
   bool hunting_at_start = false;
   bool hunting_at_end = false;
+  double start_speed = 0.0;          // [m/s] the speed the ramp really started from (options.v_start)
+  // Where the critical speed was read: time [s] and envelope peak [m] at the
+  // start of the final collapse (NaN when no critical speed).
+  double critical_time = 0.0, critical_amplitude = 0.0;
   std::vector<double> time, speed, max_lateral;  // envelope record (for charts)
   double wall_time = 0.0;
 };
@@ -105,8 +124,15 @@ RampingResult ramping(const Scenario& scenario, const RampingOptions& options);
 double linear_critical_speed(const Scenario& scenario, double v_lo, double v_hi);
 
 // Copy of the scenario with another tangential model and/or reduction factors
-// (empty model name: keep; nullptr reduction: keep).
+// (empty model name: keep; nullptr reduction: keep; factors given this way
+// are recorded by their numbers, scenario.reduction).
 Scenario with_contact(const Scenario& scenario, const std::string& tangential_model,
                       const contact::ReductionFactors* reduction);
+
+// Copy of the scenario with the reduction `spec` (a layer's factors computed
+// for the scenario's nominal patch, cached in cache_dir; engine/scenario.hpp
+// apply_reduction) and, when tangential_model is not empty, that model.
+Scenario with_reduction(const Scenario& scenario, const contact::ReductionSpec& spec, const std::string& where,
+                        const std::string& cache_dir = "", const std::string& tangential_model = "");
 
 }  // namespace railsim::engine

@@ -8,7 +8,9 @@ shared axes (small multiples): each series and annotation names its panel.
 """
 import json
 import math
+import os
 import sys
+import textwrap
 
 import matplotlib
 
@@ -27,7 +29,20 @@ def plot_series(ax, s):
     x = numbers(s["x"])
     y = numbers(s["y"])
     style = s.get("style", "line")
-    if style == "dashed":
+    if style.startswith("custom:"):
+        opts = {}
+        for item in style[len("custom:"):].split(";"):
+            key, _, value = item.partition("=")
+            opts[key] = value
+        kw["linestyle"] = opts.get("line") or "none"
+        if opts.get("marker"):
+            kw["marker"] = opts["marker"]
+            if opts.get("size"):
+                kw["markersize"] = float(opts["size"])
+            if "open" in opts:
+                kw["markerfacecolor"] = "none"
+        ax.plot(x, y, **kw)
+    elif style == "dashed":
         ax.plot(x, y, "--", linewidth=1.5, **kw)
     elif style == "dotted":
         ax.plot(x, y, ":", linewidth=1.5, **kw)
@@ -82,6 +97,8 @@ def decorate(ax, spec):
     if spec.get("logy"):
         ax.set_yscale("log")
     ax.grid(True, which="both", alpha=0.3)
+    if spec.get("y_from_zero"):
+        ax.set_ylim(bottom=0)
 
 
 def annotate(fig, ax, annotations):
@@ -105,7 +122,8 @@ def annotate(fig, ax, annotations):
 
 def single(spec):
     outside = spec.get("legend") == "outside"
-    fig, ax = plt.subplots(figsize=(11, 5) if outside else (8, 5), dpi=110)
+    size = spec.get("size") or ([11, 5] if outside else [8, 5])
+    fig, ax = plt.subplots(figsize=(size[0], size[1]), dpi=110)
     for b in spec.get("bands", []):
         plot_band(ax, b)
     for s in spec["series"]:
@@ -115,13 +133,25 @@ def single(spec):
     ax.set_title(spec.get("title", ""))
     ax.set_xlabel(spec.get("xlabel", ""))
     ax.set_ylabel(spec.get("ylabel", ""))
-    if (any(s["label"] for s in spec["series"]) or any(l.get("label") for l in spec.get("lines", []))
-            or any(sp.get("label") for sp in spec.get("spans", []))
-            or any(b.get("label") for b in spec.get("bands", []))):
-        if outside:
-            ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
+    bottom = 0.0
+    if spec.get("note"):
+        # The note under the plot, wrapped to the figure width.
+        text = "\n".join(textwrap.wrap(spec["note"], width=int(size[0] * 15)))
+        lines = text.count("\n") + 1
+        bottom = min(0.35, (lines * 9.5 + 8) / (size[1] * 72))
+        fig.text(0.01, 0.01, text, fontsize=7, va="bottom", ha="left")
+    labels = ([s["label"] for s in spec["series"] if s["label"]]
+              + [l["label"] for l in spec.get("lines", []) if l.get("label")]
+              + sorted({sp["label"] for sp in spec.get("spans", []) if sp.get("label")})
+              + [b["label"] for b in spec.get("bands", []) if b.get("label")])
+    if labels:
+        if outside or (len(labels) > 7 and not spec.get("legend_location")):
+            ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
+            outside = True
         else:
-            ax.legend(fontsize=8)
+            ax.legend(fontsize=7, loc=spec.get("legend_location") or "best")
+    fig.tight_layout(rect=(0, bottom, 1, 1))
+    fig.railsim_tight = outside
     return fig
 
 
@@ -171,12 +201,17 @@ def multiples(spec):
 def render(path):
     with open(path) as f:
         spec = json.load(f)
+    # The PNG goes next to its description unless the description names a full path.
+    if not os.path.isabs(spec["output"]):
+        spec["output"] = os.path.join(os.path.dirname(os.path.abspath(path)), spec["output"])
     if spec.get("panels"):
         fig = multiples(spec)
     else:
         fig = single(spec)
-        fig.tight_layout()
-    fig.savefig(spec["output"])
+    if getattr(fig, "railsim_tight", False):
+        fig.savefig(spec["output"], bbox_inches="tight")
+    else:
+        fig.savefig(spec["output"])
     plt.close(fig)
 
 

@@ -1,7 +1,12 @@
 // `railsim critical-speed` through the railsim binary: summary.json contents
 // (consistent with the eigenvalue analysis and with the unreduced baseline),
-// charts, resuming into the same folder, and every bad-input path (exit 2).
+// charts, resuming into the same folder, and every bad-input path (exit 2);
+// the --reductions study on its files (table, summary, charts, a killed job
+// restarting to byte-identical files, MPI == threads).
 #include <catch2/catch.hpp>
+
+#include <signal.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -133,5 +138,167 @@ TEST_CASE("railsim critical-speed under mpirun -np 2 gives the thread run's swee
   CHECK_FALSE(std::filesystem::exists(dir + "/mpi/bifurcation.csv.part0"));
   CHECK(summary_number(dir + "/mpi/summary.json", "critical_speed_kmh") ==
         summary_number(dir + "/threads/summary.json", "critical_speed_kmh"));
+}
+#endif
+
+namespace {
+
+const std::string kStudySweep = " --v-min 150 --v-max 180 --v-step 10 --duration 6 --threads 2";
+
+}  // namespace
+
+TEST_CASE("railsim critical-speed --reductions: table, summary and charts for every entry", "[cli][critical_speed][reductions]") {
+  const std::string dir = railsim::test::temp_dir("cli_cs_reductions");
+  const auto r = run_railsim("critical-speed '" + kScenario + "' --out '" + dir + "'" + kStudySweep +
+                             " --reductions '0.5,third_body,(0.72,0.56,0.56),elastic_fe'");
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  // The console table names the reference that was added (no k = 1 in the list).
+  CHECK(r.output.find("added as the k = 1 reference") != std::string::npos);
+  const auto t = railsim::results::read_csv(dir + "/reductions.csv");
+  REQUIRE(t.rows.size() == 5);
+  // A preset name only where the preset was chosen: 0.5 stays a number, third_body is named.
+  CHECK(t.rows[0][t.column("label")] == "uniform 0.5");
+  CHECK(t.rows[1][t.column("label")] == "third_body");
+  CHECK(t.rows[2][t.column("label")] == "0.72,0.56,0.56");
+  CHECK(t.rows[3][t.column("label")] == "elastic_fe");
+  CHECK(t.rows[4][t.column("label")] == "uniform 1");
+  CHECK(t.number(4, "critical_speed_change_percent") == 0.0);
+  for (std::size_t i = 0; i < t.rows.size(); ++i) {
+    // The same factors give the same critical speeds, whatever their name.
+    if (i == 1) CHECK(t.number(1, "critical_speed_kmh") == t.number(0, "critical_speed_kmh"));
+    if (i == 3) CHECK(t.number(3, "linear_critical_speed_kmh") == t.number(2, "linear_critical_speed_kmh"));
+    const double v = t.number(i, "critical_speed_kmh"), v0 = t.number(4, "critical_speed_kmh");
+    CHECK(t.number(i, "critical_speed_change_percent") == Approx(100.0 * (v - v0) / v0).margin(1e-9));
+    CHECK(t.number(i, "limit_cycle_amplitude_at_fold_mm") > 0.5);  // above the threshold at the fold
+    CHECK(std::filesystem::exists(dir + "/" + t.rows[i][t.column("folder")] + "/bifurcation.png"));
+  }
+  const std::string s = railsim::test::read_text(dir + "/summary.json");
+  for (const char* key : {"\"rule\"", "\"duration_per_point_s\": 6", "\"mu\": 0.3", "\"wheelset_model\": \"lateral\"",
+                          "\"equivalent_conicity\"", "\"saturation_law\"", "\"geometry\": \"conical",
+                          "\"limit_cycle_amplitude_at_fold_mm\"", "\"points_by_state\""})
+    CHECK(s.find(key) != std::string::npos);
+  CHECK(s.find("wall_time") == std::string::npos);
+  CHECK(railsim::test::read_text(dir + "/timing.json").find("wall_time_s") != std::string::npos);
+  // Charts: one curve per entry with its critical speed, the rule under the plot.
+  const std::string chart = railsim::test::read_text(dir + "/reductions.png.json");
+  CHECK(std::filesystem::exists(dir + "/reductions.png"));
+  CHECK(chart.find("uniform 1") == std::string::npos);  // the legend says k = 1
+  for (const char* label : {"\"k = 0.5: critical speed", "\"third_body (0.5,0.5,0.5): critical speed",
+                            "\"k = 0.72,0.56,0.56: critical speed", "\"elastic_fe (0.72,0.56,0.56): critical speed",
+                            "\"k = 1: critical speed", "still decaying at the end of the run",
+                            "Critical speed: the lowest speed of the down branch"})
+    CHECK(chart.find(label) != std::string::npos);
+  const std::string vs_k = railsim::test::read_text(dir + "/critical_speed_vs_k.png.json");
+  CHECK(std::filesystem::exists(dir + "/critical_speed_vs_k.png"));
+  CHECK(vs_k.find("linear critical speed (eigenvalues), uniform k") != std::string::npos);
+  CHECK(vs_k.find("elastic_fe (0.72,0.56,0.56)") != std::string::npos);
+
+  // Bad input: exit 2, naming the option and the entry.
+  auto bad = run_railsim("critical-speed '" + kScenario + "' --out '" + dir + "/b'" + kStudySweep + " --reductions '1,2'");
+  CHECK(bad.exit_code == 2);
+  CHECK(bad.output.find("--reductions entry 2") != std::string::npos);
+  bad = run_railsim("critical-speed '" + kScenario + "' --out '" + dir + "/b'" + kStudySweep +
+                    " --reductions 1 --reduction 0.5");
+  CHECK(bad.exit_code == 2);
+  // The conical test wheelset prescribes its creep coefficients: no patch for a layer.
+  bad = run_railsim("critical-speed '" + kScenario + "' --out '" + dir + "/b'" + kStudySweep +
+                    " --reduction layer:h=125e-6,G3=820e6");
+  CHECK(bad.exit_code == 2);
+  CHECK(bad.output.find("contact patch") != std::string::npos);
+  // The same folder with other settings is refused (its points would not match).
+  bad = run_railsim("critical-speed '" + kScenario + "' --out '" + dir + "' --v-min 150 --v-max 180 --v-step 10 "
+                    "--duration 7 --threads 2 --reductions '0.5,third_body,(0.72,0.56,0.56),elastic_fe'");
+  CHECK(bad.exit_code == 2);
+  CHECK(bad.output.find("other settings") != std::string::npos);
+}
+
+TEST_CASE("railsim critical-speed --reductions: a killed job restarts to byte-identical files", "[cli][critical_speed][reductions]") {
+  const std::string dir = railsim::test::temp_dir("cli_cs_kill");
+  const std::string args = " --v-min 150 --v-max 180 --v-step 5 --duration 30 --threads 2 --continuation "
+                           "--reductions '1,0.7,elastic_fe'";
+  // Uninterrupted reference.
+  const auto ref = run_railsim("critical-speed '" + kScenario + "' --out '" + dir + "/clean'" + args);
+  INFO(ref.output);
+  REQUIRE(ref.exit_code == 0);
+  // The same job, killed (SIGKILL) once some points are on disk, then started again.
+  const std::string start = std::string("\"") + RAILSIM_BINARY + "\" critical-speed '" + kScenario + "' --out '" + dir +
+                            "/killed'" + args + " > '" + dir + "/killed.log' 2>&1 & echo $! > '" + dir + "/pid'";
+  REQUIRE(std::system(start.c_str()) == 0);
+  const pid_t pid = static_cast<pid_t>(std::stol(railsim::test::read_text(dir + "/pid")));
+  bool some_points = false;
+  for (int i = 0; i < 2000 && !some_points; ++i) {
+    std::error_code ec;
+    if (std::filesystem::exists(dir + "/killed", ec))
+      for (const auto& e : std::filesystem::recursive_directory_iterator(dir + "/killed", ec))
+        if (e.path().filename().string().find(".part0") != std::string::npos && e.file_size(ec) > 0) some_points = true;
+    if (!some_points) usleep(20000);
+  }
+  REQUIRE(some_points);
+  const bool finished_before_kill = std::filesystem::exists(dir + "/killed/reductions.csv");
+  ::kill(pid, SIGKILL);
+  for (int i = 0; i < 500; ++i) {  // until it is gone (or a zombie)
+    const std::string stat = railsim::test::read_text("/proc/" + std::to_string(pid) + "/stat");
+    if (stat.empty() || stat.find(") Z") != std::string::npos) break;
+    usleep(10000);
+  }
+  REQUIRE_FALSE(finished_before_kill);
+  const auto again = run_railsim("critical-speed '" + kScenario + "' --out '" + dir + "/killed'" + args);
+  INFO(again.output);
+  REQUIRE(again.exit_code == 0);
+  CHECK(again.output.find("resuming") != std::string::npos);
+  const auto t = railsim::results::read_csv(dir + "/clean/reductions.csv");
+  std::vector<std::string> files = {"reductions.csv", "summary.json", "linear_critical_speeds.csv",
+                                    "reductions.png.json", "critical_speed_vs_k.png.json"};
+  for (std::size_t i = 0; i < t.rows.size(); ++i) {
+    files.push_back(t.rows[i][t.column("folder")] + "/bifurcation.csv");
+    files.push_back(t.rows[i][t.column("folder")] + "/bifurcation.png.json");
+  }
+  for (const auto& f : files) {
+    INFO(f);
+    const std::string a = railsim::test::read_text(dir + "/clean/" + f);
+    CHECK_FALSE(a.empty());
+    CHECK(railsim::test::read_text(dir + "/killed/" + f) == a);
+  }
+}
+
+TEST_CASE("railsim critical-speed: summaries record the variant; ramping names its start speed and marks the reading",
+          "[cli][critical_speed]") {
+  const std::string dir = railsim::test::temp_dir("cli_cs_record");
+  const auto r = run_railsim("critical-speed '" + kScenario + "' --method ramping --v-min 140 --v-max 185 "
+                             "--deceleration 1 --reduction third_body --no-baseline --out '" + dir + "'");
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.output.find("ramping from 185.0 km/h (--v-max)") != std::string::npos);
+  const std::string s = railsim::test::read_text(dir + "/summary.json");
+  for (const char* key : {"\"mu\": 0.3", "\"wheelset_model\": \"lateral\"", "\"geometry\": \"conical",
+                          "\"saturation_law\": \"none (linear creep forces", "\"reduction\": \"third_body\"",
+                          "\"given\": \"third_body\"", "\"start_speed_kmh\": 185", "\"critical_speed_read_at_time_s\"",
+                          "\"conicity\": 0.2"})
+    CHECK(s.find(key) != std::string::npos);
+  const std::string chart = railsim::test::read_text(dir + "/ramping.png.json");
+  CHECK(chart.find("ramp from 185.0 km/h") != std::string::npos);
+  CHECK(chart.find("critical speed read here") != std::string::npos);
+  // A number stays a number.
+  const auto n = run_railsim("critical-speed '" + kScenario + "' --method ramping --v-min 140 --v-max 185 "
+                             "--deceleration 1 --reduction 0.5 --no-baseline --out '" + dir + "/n'");
+  REQUIRE(n.exit_code == 0);
+  const std::string sn = railsim::test::read_text(dir + "/n/summary.json");
+  CHECK(sn.find("third_body") == std::string::npos);
+  CHECK(sn.find("\"reduction\": \"uniform 0.5\"") != std::string::npos);
+}
+
+#ifdef RAILSIM_HAVE_MPI
+TEST_CASE("railsim critical-speed --reductions under mpirun -np 2 gives the thread run's files", "[cli][critical_speed][mpi]") {
+  const std::string dir = railsim::test::temp_dir("cli_cs_red_mpi");
+  const std::string args = kStudySweep.substr(0, kStudySweep.find(" --threads")) + " --no-continuation --reductions '1,0.6'";
+  const auto thr = run_railsim("critical-speed '" + kScenario + "' --out '" + dir + "/threads'" + args);
+  REQUIRE(thr.exit_code == 0);
+  const std::string mpi = railsim::test::mpirun_prefix() + "mpirun --allow-run-as-root --oversubscribe -np 2 \"" +
+                          std::string(RAILSIM_BINARY) + "\" critical-speed '" + kScenario + "' --threads 1 --out '" + dir +
+                          "/mpi'" + args + " > '" + dir + "/mpi.log' 2>&1";
+  REQUIRE(std::system(mpi.c_str()) == 0);
+  for (const char* f : {"reductions.csv", "summary.json", "linear_critical_speeds.csv"})
+    CHECK(railsim::test::read_text(dir + "/mpi/" + f) == railsim::test::read_text(dir + "/threads/" + f));
 }
 #endif

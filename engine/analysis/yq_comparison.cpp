@@ -1,0 +1,190 @@
+// Y/Q of the leading wheels of several runs; see yq_comparison.hpp.
+#include "engine/analysis/yq_comparison.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "core/errors.hpp"
+#include "engine/analysis/run_history.hpp"
+#include "engine/analysis/run_safety.hpp"
+#include "engine/analysis/running_safety.hpp"
+#include "results/csv_writer.hpp"
+
+namespace railsim::engine {
+
+namespace {
+
+constexpr double kDeg = 180.0 / 3.14159265358979323846;
+
+YqWheelResult evaluate(const std::vector<double>& t, const std::vector<double>& s, const std::vector<double>& yq,
+                       double limit) {
+  YqWheelResult r;
+  for (std::size_t i = 0; i < yq.size(); ++i)
+    if (std::fabs(yq[i]) > r.peak) {
+      r.peak = std::fabs(yq[i]);
+      r.peak_signed = yq[i];
+      r.peak_distance = s[i];
+      r.peak_time = t[i];
+    }
+  // Length and duration above the limit; crossings interpolated inside each sample interval.
+  for (std::size_t i = 0; i + 1 < yq.size(); ++i) {
+    const double a = std::fabs(yq[i]) - limit, b = std::fabs(yq[i + 1]) - limit;
+    if (a <= 0.0 && b <= 0.0) continue;
+    double f0 = 0.0, f1 = 1.0;  // part of the interval above the limit
+    if (a <= 0.0) f0 = a / (a - b);
+    if (b <= 0.0) f1 = a / (a - b);
+    const double ds = s[i + 1] - s[i], dt = t[i + 1] - t[i];
+    r.exceed_length += (f1 - f0) * std::fabs(ds);
+    r.exceed_time += (f1 - f0) * dt;
+    const double at0 = s[i] + f0 * ds, at1 = s[i] + f1 * ds;
+    if (!r.exceeded) r.first_exceed = at0;
+    r.last_exceed = at1;
+    r.exceeded = true;
+  }
+  return r;
+}
+
+results::Json wheel_json(const YqWheelResult& w) {
+  results::Json j = results::Json::object();
+  j.set("max_abs_yq", w.peak);
+  j.set("yq_at_max", w.peak_signed);
+  j.set("distance_m", w.peak_distance);
+  j.set("time_s", w.peak_time);
+  j.set("exceeds_nadal", w.exceeded);
+  j.set("exceed_length_m", w.exceed_length);
+  j.set("exceed_time_s", w.exceed_time);
+  j.set("first_exceed_m", w.exceeded ? results::Json(w.first_exceed) : results::Json(nullptr));
+  j.set("last_exceed_m", w.exceeded ? results::Json(w.last_exceed) : results::Json(nullptr));
+  return j;
+}
+
+}  // namespace
+
+YqComparison compare_yq(const Scenario& sc, const std::vector<std::string>& dirs, const std::vector<std::string>& labels,
+                        const std::string& wheelset) {
+  if (dirs.empty()) throw InputError("compare-yq: no run folders given");
+  if (!labels.empty() && labels.size() != dirs.size())
+    throw InputError("--labels: " + std::to_string(labels.size()) + " labels for " + std::to_string(dirs.size()) +
+                     " run folders");
+  const RunHistory layout(sc.model);
+  if (layout.wheelsets.empty()) throw InputError(sc.file + ": the scenario has no wheelsets");
+  std::size_t w = 0;
+  if (wheelset.empty()) {
+    for (std::size_t i = 1; i < layout.wheelsets.size(); ++i)
+      if (layout.wheelsets[i].offset > layout.wheelsets[w].offset) w = i;
+  } else {
+    bool found = false;
+    std::string known;
+    for (std::size_t i = 0; i < layout.wheelsets.size(); ++i) {
+      known += (i ? ", " : "") + layout.wheelsets[i].name;
+      if (layout.wheelsets[i].name == wheelset) w = i, found = true;
+    }
+    if (!found) throw InputError("--wheelset: no wheelset '" + wheelset + "' in the scenario (known: " + known + ")");
+  }
+  YqComparison c;
+  c.scenario = sc.name;
+  c.wheelset = layout.wheelsets[w].name;
+  c.offset = layout.wheelsets[w].offset;
+  const FlangeAngle fa = flange_angle(*sc.model.wheelsets[w].geometry);
+  c.flange_angle = fa.angle;
+  c.mu = sc.model.coupling.options().material.mu;
+  c.nadal = nadal_limit(c.flange_angle, c.mu);
+  for (std::size_t r = 0; r < dirs.size(); ++r) {
+    YqRun run;
+    run.dir = dirs[r];
+    run.label = labels.empty() ? std::filesystem::path(dirs[r]).lexically_normal().filename().string() : labels[r];
+    if (run.label.empty()) run.label = dirs[r];
+    const std::string file = dirs[r] + "/channels.csv";
+    if (!std::filesystem::exists(file))
+      throw InputError(file + ": not found (give folders written by `railsim run SCENARIO --out DIR`)");
+    const results::CsvTable t = results::read_csv(file);
+    for (const std::string& col : {std::string("time"), std::string("distance"), c.wheelset + ".L.YQ",
+                                  c.wheelset + ".R.YQ"})
+      t.column(col);  // throws naming the file and the column
+    for (std::size_t i = 0; i < t.rows.size(); ++i) {
+      run.time.push_back(t.number(i, "time"));
+      run.distance.push_back(t.number(i, "distance") + c.offset);
+      run.yq[0].push_back(t.number(i, c.wheelset + ".L.YQ"));
+      run.yq[1].push_back(t.number(i, c.wheelset + ".R.YQ"));
+    }
+    if (run.time.size() < 2) throw InputError(file + ": fewer than two samples");
+    for (int s = 0; s < 2; ++s) run.wheel[s] = evaluate(run.time, run.distance, run.yq[s], c.nadal);
+    c.runs.push_back(std::move(run));
+  }
+  return c;
+}
+
+results::Chart yq_comparison_chart(const YqComparison& c) {
+  results::Chart ch;
+  ch.title = "Y/Q of the leading wheelset " + c.wheelset + ": " + c.scenario;
+  ch.xlabel = "track distance of " + c.wheelset + " [m]";
+  ch.ylabel = "Y/Q [-]";
+  ch.width = 10.0;
+  ch.height = 6.0;
+  static const char* colors[] = {"tab:blue", "tab:red", "tab:green", "tab:purple", "tab:orange", "tab:brown"};
+  char buf[200];
+  for (std::size_t r = 0; r < c.runs.size(); ++r) {
+    const YqRun& run = c.runs[r];
+    const std::string color = colors[r % 6];
+    for (int s = 0; s < 2; ++s) {
+      results::ChartSeries ser;
+      const YqWheelResult& w = run.wheel[s];
+      std::snprintf(buf, sizeof buf, "%s, %s wheel: peak %.3g at %.1f m%s", run.label.c_str(), s == 0 ? "left" : "right",
+                    w.peak, w.peak_distance, w.exceeded ? "" : ", below the limit");
+      ser.label = buf;
+      if (w.exceeded) {
+        std::snprintf(buf, sizeof buf, ", above the limit over %.2f m (%.3f s)", w.exceed_length, w.exceed_time);
+        ser.label += buf;
+      }
+      ser.color = color;
+      ser.style = results::custom_style("", s == 0 ? ":" : "-");
+      ser.x = run.distance;
+      ser.y = run.yq[s];
+      ch.series.push_back(ser);
+      results::ChartSeries peak;
+      peak.color = color;
+      peak.style = results::custom_style("o", "", true, 8);
+      peak.x = {w.peak_distance};
+      peak.y = {w.peak_signed};
+      ch.series.push_back(peak);
+    }
+  }
+  std::snprintf(buf, sizeof buf, "Nadal limit %.3g (flange angle %.1f deg, mu %.2g)", c.nadal, c.flange_angle * kDeg,
+                c.mu);
+  ch.lines.push_back({c.nadal, buf, "k", false});
+  ch.lines.push_back({-c.nadal, "", "k", false});
+  ch.note = "Y/Q = lateral over vertical force of the rail on the wheel, signed (track y to the left); the limit "
+            "applies to |Y/Q|. Dotted: left wheel, solid: right wheel; circles: each wheel's peak.";
+  return ch;
+}
+
+results::Json yq_comparison_summary(const YqComparison& c) {
+  results::Json s = results::Json::object();
+  s.set("scenario", c.scenario);
+  s.set("wheelset", c.wheelset);
+  s.set("wheelset_offset_m", c.offset);
+  s.set("nadal_limit", c.nadal);
+  s.set("flange_angle_deg", c.flange_angle * kDeg);
+  s.set("mu", c.mu);
+  s.set("distances", "track distance of the compared wheelset [m]");
+  results::Json arr = results::Json::array();
+  for (const auto& r : c.runs) {
+    results::Json j = results::Json::object();
+    j.set("label", r.label);
+    j.set("dir", r.dir);
+    results::Json wheels = results::Json::object();
+    wheels.set("left", wheel_json(r.wheel[0]));
+    wheels.set("right", wheel_json(r.wheel[1]));
+    j.set("wheels", wheels);
+    const int p = r.wheel[1].peak > r.wheel[0].peak ? 1 : 0;
+    results::Json peak = wheel_json(r.wheel[p]);
+    peak.set("wheel", p == 0 ? "left" : "right");
+    j.set("peak", peak);
+    arr.push(j);
+  }
+  s.set("runs", arr);
+  return s;
+}
+
+}  // namespace railsim::engine

@@ -1,0 +1,78 @@
+// Y/Q comparison of runs (engine/analysis/yq_comparison.cpp) on synthetic
+// channel files: the leading wheelset and its distance, peaks, the length and
+// duration above Nadal's limit (crossings interpolated), and bad input.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "core/errors.hpp"
+#include "engine/analysis/running_safety.hpp"
+#include "engine/analysis/yq_comparison.hpp"
+#include "test_support.hpp"
+
+using namespace railsim::engine;
+
+namespace {
+
+// channels.csv with time, distance (vehicle reference at 10 m/s from 0) and
+// the ws1 columns the comparison reads: |Y/Q| of the right wheel a triangle of
+// height `peak` centred at t = 5 s, half width 1 s; left wheel -0.2.
+void write_run(const std::string& dir, double peak) {
+  std::filesystem::create_directories(dir);
+  std::ofstream f(dir + "/channels.csv");
+  f << "time,distance,speed,ws1.L.YQ,ws1.R.YQ\n";
+  for (int i = 0; i <= 1000; ++i) {
+    const double t = 0.01 * i;
+    const double tri = std::max(0.0, 1.0 - std::fabs(t - 5.0)) * peak;
+    f << t << "," << 10.0 * t << ",10," << -0.2 << "," << tri << "\n";
+  }
+}
+
+}  // namespace
+
+TEST_CASE("Y/Q comparison: peaks, places and how long Nadal's limit is exceeded", "[yq_comparison]") {
+  const Scenario sc = load_scenario(railsim::test::data_path("scenarios/single_wheelset_flange.yaml"));
+  const std::string dir = railsim::test::temp_dir("yq_cmp");
+  write_run(dir + "/a", 2.0);
+  write_run(dir + "/b", 1.0);
+  const YqComparison c = compare_yq(sc, {dir + "/a", dir + "/b"}, {"k = 1", "k = 0.5"});
+  // The single wheelset: its own offset (0); conical wheels fall back to a 70 deg flange angle.
+  CHECK(c.wheelset == "ws1");
+  CHECK(c.nadal == Approx(nadal_limit(70.0 * M_PI / 180.0, 0.3)).epsilon(1e-12));
+  REQUIRE(c.runs.size() == 2);
+  const auto& a = c.runs[0].wheel[1];
+  CHECK(a.peak == Approx(2.0));
+  CHECK(a.peak_distance == Approx(50.0 + c.offset));
+  CHECK(a.peak_time == Approx(5.0));
+  // Above the limit L where 2 (1 - |t - 5|) > L: for |t - 5| < 1 - L/2, i.e. 2 - L seconds at 10 m/s.
+  REQUIRE(a.exceeded);
+  CHECK(a.exceed_time == Approx(2.0 - c.nadal).epsilon(1e-9));
+  CHECK(a.exceed_length == Approx(10.0 * (2.0 - c.nadal)).epsilon(1e-9));
+  CHECK(a.first_exceed == Approx(10.0 * (4.0 + c.nadal / 2.0)).epsilon(1e-9));
+  CHECK(a.last_exceed == Approx(10.0 * (6.0 - c.nadal / 2.0)).epsilon(1e-9));
+  const auto& b = c.runs[1].wheel[1];
+  CHECK(b.peak == Approx(1.0));
+  CHECK_FALSE(b.exceeded);
+  CHECK(b.exceed_length == 0.0);
+  CHECK(c.runs[1].wheel[0].peak == Approx(0.2));
+  CHECK(c.runs[1].wheel[0].peak_signed == Approx(-0.2));
+  // Chart and summary carry the limit and each run.
+  const auto chart = yq_comparison_chart(c);
+  REQUIRE(chart.lines.size() == 2);
+  CHECK(chart.lines[0].value == Approx(c.nadal));
+  CHECK(chart.series[2].label.find("k = 1, right wheel: peak 2 at") == 0);
+  CHECK(chart.series[2].label.find("above the limit over") != std::string::npos);
+  const std::string s = yq_comparison_summary(c).dump();
+  CHECK(s.find("\"exceeds_nadal\": true") != std::string::npos);
+  CHECK(s.find("\"label\": \"k = 0.5\"") != std::string::npos);
+  // Default labels: the folder names. Bad input names the file or option.
+  CHECK(compare_yq(sc, {dir + "/b"}, {}).runs[0].label == "b");
+  CHECK_THROWS_WITH(compare_yq(sc, {dir + "/missing"}, {}), Catch::Contains("missing/channels.csv"));
+  CHECK_THROWS_WITH(compare_yq(sc, {dir + "/a"}, {"x", "y"}), Catch::Contains("--labels"));
+  CHECK_THROWS_WITH(compare_yq(sc, {dir + "/a"}, {}, "ws9"), Catch::Contains("--wheelset") && Catch::Contains("ws1"));
+  std::filesystem::create_directories(dir + "/c");
+  std::ofstream(dir + "/c/channels.csv") << "time,distance,ws2.L.YQ\n0,0,0\n";
+  CHECK_THROWS_WITH(compare_yq(sc, {dir + "/c"}, {}), Catch::Contains("c/channels.csv"));
+}
