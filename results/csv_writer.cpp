@@ -1,7 +1,9 @@
 // Streaming CSV writer and a small reader; see csv_writer.hpp.
 #include "results/csv_writer.hpp"
 
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 
@@ -86,7 +88,10 @@ void CsvWriter::row(const std::vector<double>& values) {
 }
 
 void CsvWriter::flush() {
-  std::fflush(file_);
+  // A full disk or a lost device shows here (the rows are buffered): an
+  // error naming the file, never a run that ends as if its rows were kept.
+  if (std::fflush(file_) != 0 || std::ferror(file_))
+    throw InputError(path_ + ": write failed (" + std::strerror(errno) + "): the rows since the last flush are lost");
   rows_since_flush_ = 0;
 }
 

@@ -1,6 +1,9 @@
 // CSV writer: rows are on disk as soon as they are written; append resumes without a second header.
 #include <catch2/catch.hpp>
 
+#include <fstream>
+#include <string>
+
 #include "core/errors.hpp"
 #include "results/csv_writer.hpp"
 #include "test_support.hpp"
@@ -35,4 +38,18 @@ TEST_CASE("a wrong cell count and unreadable files are reported", "[results]") {
   CHECK_THROWS_AS(w.end_row(), std::logic_error);
   CHECK_THROWS_AS(read_csv(dir + "/missing.csv"), railsim::InputError);
   CHECK_THROWS_AS(CsvWriter(dir + "/no/such/dir/c.csv", {"a"}), railsim::InputError);
+}
+
+TEST_CASE("a write that fails (full disk) is an error naming the file, not lost rows", "[results][csv]") {
+  // /dev/full accepts the open and fails every write with ENOSPC (Linux).
+  if (!std::ifstream("/dev/full").good()) return;
+  CsvWriter w("/dev/full", {"a", "b"});
+  w.cell(1.0).cell(2.0);
+  try {
+    w.end_row();  // flush_every = 1: the row is flushed here
+    FAIL("no error on a full device");
+  } catch (const railsim::InputError& e) {
+    CHECK(std::string(e.what()).find("/dev/full") != std::string::npos);
+    CHECK(std::string(e.what()).find("write failed") != std::string::npos);
+  }
 }
