@@ -72,7 +72,8 @@ EquilibriumResult static_equilibrium(const Model& model, double t0, int max_iter
   double res = residual(r.x, g);  // merit: norm of the generalised forces
   double acc = last_max;          // convergence: max |acceleration|
   for (int it = 0; it < max_iterations && acc > tolerance; ++it) {
-    residual(r.x, g);  // f at r.x for the differences
+    // f holds the model at r.x: the last evaluation was the accepted one
+    // (the start, or the trial the line search kept).
     if (!ode.jacobian(t0, r.x.data(), f.data(), Jd.data())) {
       r.message = "the Jacobian failed after " + std::to_string(it) + " iterations (largest acceleration " +
                   std::to_string(acc) + "): " + ode.failure_message();
