@@ -4,14 +4,21 @@
 //  - Manchester coach, 200 km/h, straight track with ERRI B176 low-level
 //    irregularities, Kalker + CHOPAYA, lateral wheelset model (target >= 100x);
 //  - the same with the full wheelset model;
-//  - the Cooperrider car at 100 m/s (contact-geometry table, full model).
+//  - the Cooperrider car at 100 m/s (contact-geometry table, full model);
+//  - the coach on its S1002/UIC60 profiles through tracks/curve_twist.yaml at
+//    60 km/h (R 250 m, flange contact, twist defect), both wheelset models, as
+//    `railsim run scenarios/manchester_coach_curve_twist.yaml` runs it (issue
+//    13: target >= 20x real time).
 // Counters: "rtf" = real-time factor of one run of `duration` seconds on wall
 // time, "rtf_cpu" on the thread's CPU time (the machine may be shared).
 #include <benchmark/benchmark.h>
 
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 
+#include "config/yaml_input.hpp"
 #include "engine/scenario.hpp"
 #include "engine/simulation.hpp"
 #include "engine/system.hpp"
@@ -54,6 +61,39 @@ void run_scene(benchmark::State& state, const char* file, const char* wheelset_m
   state.counters["sim_s"] = sc.duration;
 }
 
+// A scenario file run as `railsim run` runs it (equilibrium start included),
+// with its `wheelset_model:` line set to `wheelset_model`.
+void run_file(benchmark::State& state, const char* file, const char* wheelset_model) {
+  using namespace railsim::engine;
+  const auto path = scenario_path(file);
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  std::string text = ss.str();
+  const std::string key = "\nwheelset_model: lateral";
+  const auto at = text.find(key);
+  if (at == std::string::npos) {
+    state.SkipWithError("scenario has no 'wheelset_model: lateral' line");
+    return;
+  }
+  text.replace(at, key.size(), std::string("\nwheelset_model: ") + wheelset_model);
+  const Scenario sc = load_scenario(railsim::config::InputNode::load_string(text, path),
+                                    std::filesystem::path(path).parent_path().string());
+  double rtf = 0, rtf_cpu = 0, steps = 0, calls = 0;
+  for (auto _ : state) {
+    const RunSummary r = simulate(sc.model, sc.integrator, sc.x0, sc.duration, sc.output_interval);
+    rtf = r.real_time_factor;
+    rtf_cpu = r.real_time_factor_cpu;
+    steps = double(r.stats.steps);
+    calls = double(r.stats.rhs_calls);
+  }
+  state.counters["rtf"] = rtf;
+  state.counters["rtf_cpu"] = rtf_cpu;
+  state.counters["steps"] = steps;
+  state.counters["rhs_calls"] = calls;
+  state.counters["sim_s"] = sc.duration;
+}
+
 void rhs_eval(benchmark::State& state, const char* file) {
   using namespace railsim::engine;
   const Scenario sc = load_scenario(scenario_path(file));
@@ -82,6 +122,12 @@ BENCHMARK_CAPTURE(run_scene, cooperrider_100_full_cvode, "cooperrider_car_100.ya
 BENCHMARK_CAPTURE(run_scene, cooperrider_100_full_cvode_rtol1e-4, "cooperrider_car_100.yaml", "full", "cvode_bdf",
                   1e-4, 1e-6)
     ->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK_CAPTURE(run_file, manchester_curve_twist_60_lateral, "manchester_coach_curve_twist.yaml", "lateral")
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1);
+BENCHMARK_CAPTURE(run_file, manchester_curve_twist_60_full, "manchester_coach_curve_twist.yaml", "full")
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1);
 BENCHMARK_CAPTURE(rhs_eval, manchester_200_lateral, "manchester_coach_200_erri.yaml");
 BENCHMARK_CAPTURE(rhs_eval, cooperrider_100_full, "cooperrider_car_100.yaml");
 

@@ -10,6 +10,7 @@
 #include "contact/geometry/semi_hertz.hpp"
 #include "engine/geometry_table.hpp"
 #include "engine/profile_geometry.hpp"
+#include "engine/strip_patches.hpp"
 
 using namespace railsim::contact;
 
@@ -113,6 +114,64 @@ static void BM_StripsWithYaw(benchmark::State& state) {
   state.SetLabel("per wheel");
 }
 BENCHMARK(BM_StripsWithYaw);
+
+// The engine's whole normal-contact job per wheel and right-hand side on the
+// profiles geometry (engine/wheelset_contact.cpp): the strips that can carry
+// load and the wheel's loads and patches. Lateral model: strips up to a
+// 0.3 mm gap, then the approach that carries the wheel load (40 kN, the
+// coach's static wheel load); full model: strips up to the approach (0.05 mm
+// plus what a 0.1 mrad roll beyond the rigid pose adds) and the loads there.
+static const railsim::engine::ProfileGeometry& coach_geometry() {
+  static const railsim::engine::ProfileGeometry g = [] {
+    railsim::engine::ProfileGeometryParams p;
+    p.setup.inclination = std::atan(1.0 / 40.0);
+    return railsim::engine::ProfileGeometry(p, Material{});
+  }();
+  return g;
+}
+// Poses along a hunting-like path (shift 5 mm, yaw 4 mrad amplitude, 4096
+// evaluations per cycle): consecutive evaluations are close, as within an
+// integration; tread contact only (flange contact starts at 6.25 mm).
+static std::vector<std::pair<double, double>> path_poses() {
+  std::vector<std::pair<double, double>> poses(4096);
+  for (std::size_t i = 0; i < poses.size(); ++i) {
+    const double a = 2.0 * M_PI * double(i) / double(poses.size());
+    poses[i] = {5e-3 * std::sin(a), 4e-3 * std::cos(a)};
+  }
+  return poses;
+}
+static void BM_WheelNormalContactLateral(benchmark::State& state) {
+  const auto& g = coach_geometry();
+  const auto poses = path_poses();
+  StripSet s;
+  railsim::engine::StripLoads L;
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const auto& q = poses[i++ & 4095];
+    g.strips(q.first, q.second, 0.3e-3, s);
+    const double w = railsim::engine::strip_approach_for_load(s, 4.0e4, 0.0, g.contact_modulus(), L);
+    benchmark::DoNotOptimize(w);
+  }
+  state.SetLabel("per wheel");
+}
+BENCHMARK(BM_WheelNormalContactLateral);
+
+static void BM_WheelNormalContactFull(benchmark::State& state) {
+  const auto& g = coach_geometry();
+  const auto poses = path_poses();
+  StripSet s;
+  railsim::engine::StripLoads L;
+  std::size_t i = 0;
+  const double w = 5e-5, dphi = 1e-4, reach = w + dphi * 0.95;
+  for (auto _ : state) {
+    const auto& q = poses[i++ & 4095];
+    g.strips(q.first, q.second, reach, s);
+    railsim::engine::strip_loads(s, w, -dphi, 0.0, g.contact_modulus(), L);
+    benchmark::DoNotOptimize(L.vertical);
+  }
+  state.SetLabel("per wheel");
+}
+BENCHMARK(BM_WheelNormalContactFull);
 
 static void BM_RsgeoEvaluate(benchmark::State& state) {
   static const railsim::engine::GeometryTable g(std::string(RAILSIM_SOURCE_DIR) +

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "contact/geometry/strip_contact_table.hpp"
 #include "contact/tangential_model.hpp"
 #include "contact/types.hpp"
 #include "engine/model.hpp"
@@ -47,6 +48,10 @@ struct Data {
   // (engine/analysis/run_history.hpp). Empty in other uses of Data.
   Eigen::VectorXd xdot;
   std::vector<std::unique_ptr<contact::TangentialWorkspace>> workspace;  // per wheel
+  // Scratch of the strip-wise normal contact (engine/wheelset_contact.cpp):
+  // the strips of the two wheels of the wheelset being evaluated (25 kB each,
+  // kept here so that the right-hand side does not clear them on the stack).
+  std::vector<contact::StripSet> strips;
   double t = 0.0, V = 0.0, s = 0.0;
   long rhs_calls = 0;
   long invalid_contact_calls = 0;      // evaluations with a contact outside its validity domain

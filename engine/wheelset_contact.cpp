@@ -100,6 +100,14 @@ void range_failure(const Model& model, Data& d, int w, const WheelsetKinematics&
 
 // Strip gaps beyond this never carry load (approaches stay below ~0.3 mm) [m].
 constexpr double kStripGapCutoff = 1.5e-3;
+// The strips fetched are those up to a gap that can still be loaded (the
+// approach plus what the roll beyond the rigid pose adds at the wheel's
+// farthest strip), at most kStripGapCutoff: the loads are the same as with
+// every strip up to kStripGapCutoff, at a fraction of the cost. The lateral
+// model fetches up to kLateralFirstCutoff (its lever arms need 0.2 mm) and
+// again up to kStripGapCutoff when the solved approach reaches that gap.
+constexpr double kLateralFirstCutoff = 0.3e-3;
+constexpr double kStripLateralReach = 0.2;  // strips' lateral positions lie within l0 -+ this [m]
 
 // Patches of a distributed-contact wheel as points with their loads: the
 // equivalent Hertz ellipse at the patch's own load (N0 = N).
@@ -132,7 +140,7 @@ bool lateral_loss_of_contact(Data& d, const Wheelset& ws, int i, double Q) {
 
 // Normal loads from strips: full model, from the wheel's approach; lateral
 // model, the approach that carries the quasi-static load.
-bool distributed_loads(const Model& model, Data& d, int w, const WheelsetKinematics& k, const contact::StripSet* strips,
+bool distributed_loads(const Model& model, Data& d, int w, const WheelsetKinematics& k, contact::StripSet* strips,
                        WheelGeometry* g, double (*N)[WheelGeometry::kMaxPoints], double* Qlat) {
   const Wheelset& ws = model.wheelsets[w];
   const ContactGeometry& geo = *ws.geometry;
@@ -150,7 +158,11 @@ bool distributed_loads(const Model& model, Data& d, int w, const WheelsetKinemat
       const double zr = i == 0 ? T.vert_left : T.vert_right;
       const double dzr = i == 0 ? T.dvert_left : T.dvert_right;
       const double wi = ws.static_approach[i] - (m.q[kVert] - zr - ref.height);
-      strip_loads(strips[i], wi, side * (k.phi - ref.roll), 0.0, Es, L);
+      const double dphi = side * (k.phi - ref.roll);
+      // Largest w - dphi a over the wheel's strips, a within l0 -+ kStripLateralReach.
+      const double reach = wi - dphi * (dphi > 0.0 ? geo.l0() - kStripLateralReach : geo.l0() + kStripLateralReach);
+      geo.strips(side * k.y, side * k.psi, std::min(kStripGapCutoff, reach + 1e-6), strips[i]);
+      strip_loads(strips[i], wi, dphi, 0.0, Es, L);
       patches_to_points(L, mat, g[i], N[i]);
       if (cn > 0.0) {
         const double rate0 = m.v[kVert] - d.V * dzr - ref.dheight_dy * k.ydot;
@@ -174,6 +186,8 @@ bool distributed_loads(const Model& model, Data& d, int w, const WheelsetKinemat
   const double D = -F[kRoll] + geo.r0() * F[kLat];
   double a[2];
   for (int i = 0; i < 2; ++i) {
+    const int side = i == 0 ? 1 : -1;
+    geo.strips(side * k.y, side * k.psi, kLateralFirstCutoff, strips[i]);
     double num = 0.0, den = 0.0, vmin = 1e9, amin = geo.l0();
     for (int j = 0; j < strips[i].n; ++j) {
       const contact::StripPoint& q = strips[i].s[j];
@@ -193,7 +207,12 @@ bool distributed_loads(const Model& model, Data& d, int w, const WheelsetKinemat
   Qlat[1] = (S * a[0] - D) / (a[0] + a[1]);
   for (int i = 0; i < 2; ++i) {
     if (!(Qlat[i] > 0.0)) return lateral_loss_of_contact(d, ws, i, Qlat[i]);
-    strip_approach_for_load(strips[i], Qlat[i], 0.0, Es, L);
+    // Loaded strips have gap < w cos(delta) <= w: fetched unless w reached the cutoff.
+    if (strip_approach_for_load(strips[i], Qlat[i], 0.0, Es, L) >= kLateralFirstCutoff) {
+      const int side = i == 0 ? 1 : -1;
+      geo.strips(side * k.y, side * k.psi, kStripGapCutoff, strips[i]);
+      strip_approach_for_load(strips[i], Qlat[i], 0.0, Es, L);
+    }
     patches_to_points(L, mat, g[i], N[i]);
   }
   return true;
@@ -302,15 +321,12 @@ bool wheelset_forces(const Model& model, Data& d, int w, const double* x, double
   // Geometry of both wheels, once: points with Hertz laws, or strips.
   const bool distributed = geo.distributed();
   WheelGeometry g[2];
-  contact::StripSet strips[2];
+  contact::StripSet* strips = d.strips.data();  // two, scratch
   double N[2][WheelGeometry::kMaxPoints] = {};
   double Qlat[2] = {0.0, 0.0};
   for (int i = 0; i < 2; ++i) {
     const int side = i == 0 ? 1 : -1;
-    if (distributed) {
-      geo.strips(side * k.y, side * k.psi, kStripGapCutoff, strips[i]);
-      continue;
-    }
+    if (distributed) continue;  // strips fetched with the loads (distributed_loads)
     geo.evaluate(side * k.y, side * k.psi, g[i]);
     for (int p = 0; p < g[i].n; ++p) complete_point(g[i].p[p], ws.static_load[i], ws.hertz_q0[i]);
   }

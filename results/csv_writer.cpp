@@ -2,6 +2,7 @@
 #include "results/csv_writer.hpp"
 
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -44,10 +45,15 @@ void CsvWriter::separator() {
 
 CsvWriter& CsvWriter::cell(double v) {
   separator();
-  if (std::isnan(v))
+  if (std::isnan(v)) {
     std::fputs("nan", file_);
-  else
-    std::fprintf(file_, "%.*g", precision_, v);
+    return *this;
+  }
+  // std::to_chars with a precision formats exactly as printf's %.*g does,
+  // several times faster (it sets the cost of writing long runs).
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general, precision_);
+  std::fwrite(buf, 1, std::size_t(r.ptr - buf), file_);
   return *this;
 }
 

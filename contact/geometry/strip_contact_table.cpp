@@ -260,7 +260,23 @@ StripContactTable StripContactTable::build(const WheelRailGeometry& g, const Str
         t.entries_.push_back(e);
       }
     }
+  t.index_near_ranges();
   return t;
+}
+
+void StripContactTable::index_near_ranges() {
+  near_.assign(rows_.size() * kNearLevels, NearRange{});
+  for (std::size_t r = 0; r < rows_.size(); ++r) {
+    const Row& row = rows_[r];
+    for (int L = 0; L < kNearLevels; ++L) {
+      NearRange& nr = near_[r * kNearLevels + std::size_t(L)];
+      for (int j = row.j0; j <= row.j1; ++j)
+        if (entries_[row.offset + std::size_t(j - row.j0)].gap <= kNearGap[L]) {
+          if (nr.j1 < nr.j0) nr.j0 = j;
+          nr.j1 = j;
+        }
+    }
+  }
 }
 
 void StripContactTable::locate(double y, double psi, int& i, double& t, int& k, double& wpsi, double& apsi) const {
@@ -328,67 +344,92 @@ void StripContactTable::strips(double y, double psi, double cutoff, StripSet& ou
       j0 = std::max(j0, row(kk, ii).j0);
       j1 = std::min(j1, row(kk, ii).j1);
     }
+  // A cutoff within a kNearGap level: only the hull of the nodes' near strips can
+  // pass it, plus one neighbour on each side (index_near_ranges). Not in the
+  // end cells in y, whose slopes are not limited.
+  int level = 0;
+  while (level < kNearLevels && cutoff > kNearGap[level]) ++level;
+  if (level < kNearLevels && i > 0 && i + 1 < ny_ - 1) {
+    int n0 = strips_total_, n1 = -1;
+    for (int kk = k; kk <= kb; ++kk)
+      for (int ii = i; ii <= i + 1; ++ii) {
+        const NearRange& nr =
+            near_[(std::size_t(kk) * std::size_t(ny_) + std::size_t(ii)) * kNearLevels + std::size_t(level)];
+        if (nr.j1 < nr.j0) continue;
+        n0 = std::min(n0, nr.j0);
+        n1 = std::max(n1, nr.j1);
+      }
+    if (n1 < n0) {  // nothing within reach
+      out.n = 0;
+      out.width = grid_.strip;
+      return;
+    }
+    j0 = std::max(j0, n0 - 1);
+    j1 = std::min(j1, n1 + 1);
+  }
   // Lead: odd in psi, interpolated as psi * (lead/psi) linear in psi^2 (node 0
   // takes node 1's lead/psi).
   const double p0 = k * grid_.yaw_step, p1 = (k + 1) * grid_.yaw_step;
   const double sign = psi < 0 ? -1.0 : 1.0;
   out.n = 0;
   out.width = grid_.strip;
-  auto entry = [&](int kk, int ii, int j) -> const Entry& {
+  // Entries of strip j0 + q in the (up to) four rows: a (row i), b (row i+1)
+  // at yaw node k (0) and k+1 (1).
+  auto base = [&](int kk, int ii) {
     const Row& r = row(kk, ii);
-    return entries_[r.offset + std::size_t(j - r.j0)];
+    return entries_.data() + r.offset + std::size_t(j0 - r.j0);
   };
-  // Pass 1: gaps; pass 2 fills the strips near the loaded runs.
-  double vgap[StripSet::kMax + 2];
   const int m = std::min(j1 - j0 + 1, StripSet::kMax);
+  if (m <= 0) return;
+  const Entry* a0 = base(k, i);
+  const Entry* b0 = base(k, i + 1);
+  const Entry* a1 = two ? base(k + 1, i) : a0;
+  const Entry* b1 = two ? base(k + 1, i + 1) : b0;
+  // Pass 1: gaps; pass 2 fills the strips near the loaded runs.
+  double vgap[StripSet::kMax];
   for (int q = 0; q < m; ++q) {
-    const int j = j0 + q;
-    auto gap_at = [&](int kk) {
-      const Entry& a = entry(kk, i, j);
-      const Entry& b = entry(kk, i + 1, j);
-      return h00 * a.gap + h10 * a.dgap + h01 * b.gap + h11 * b.dgap;
-    };
-    double v = gap_at(k);
-    if (two) v += w * (gap_at(k + 1) - v);
+    double v = h00 * a0[q].gap + h10 * a0[q].dgap + h01 * b0[q].gap + h11 * b0[q].dgap;
+    if (two) v += w * (h00 * a1[q].gap + h10 * a1[q].dgap + h01 * b1[q].gap + h11 * b1[q].dgap - v);
     vgap[q] = std::max(0.0, v);
   }
+  // lead / psi at the nodes (node 0 takes node 1's); at psi = 0 the lead is 0.
+  const double inv_p0 = k > 0 ? 1.0 / p0 : 0.0, inv_p1 = nk_ > 1 ? 1.0 / p1 : 0.0;
   for (int q = 0; q < m; ++q) {
     const bool near = vgap[q] <= cutoff || (q > 0 && vgap[q - 1] <= cutoff) || (q + 1 < m && vgap[q + 1] <= cutoff);
     if (!near || out.n == StripSet::kMax) continue;
     const int j = j0 + q;
-    auto fill = [&](int kk, StripPoint& s) {
-      const Entry& a = entry(kk, i, j);
-      const Entry& b = entry(kk, i + 1, j);
-      s.angle = h00 * a.angle + h10 * a.dangle + h01 * b.angle + h11 * b.dangle;
-      s.lateral = a.lateral + t * (b.lateral - a.lateral);
-      s.lead = a.lead + t * (b.lead - a.lead);
-      s.height = a.height + t * (b.height - a.height);
-      s.A = a.A + t * (b.A - a.A);
-      s.f = a.f + t * (b.f - a.f);
-    };
-    StripPoint& s = out.s[out.n++];
-    s.index = j;
-    s.gap = vgap[q];
-    s.y_wheel = y_wheel_[std::size_t(j)];
-    fill(k, s);
-    double g0 = k > 0 ? s.lead / p0 : 0.0;
-    if (two || k == 0) {
-      StripPoint s1;
-      fill(k + 1 < nk_ ? k + 1 : k, s1);
-      const double g1 = s1.lead / (k + 1 < nk_ ? p1 : std::max(p0, 1e-300));
-      if (k == 0) g0 = g1;
-      if (two) {
-        s.angle += w * (s1.angle - s.angle);
-        s.lateral += w * (s1.lateral - s.lateral);
-        s.height += w * (s1.height - s.height);
-        s.A += w * (s1.A - s.A);
-        s.f += w * (s1.f - s.f);
-      }
-      s.lead = apsi * (g0 + (two ? w : 0.0) * (g1 - g0));
+    const Entry& ea = a0[q];
+    const Entry& eb = b0[q];
+    StripPoint& sp = out.s[out.n++];
+    sp.index = j;
+    sp.gap = vgap[q];
+    sp.y_wheel = y_wheel_[std::size_t(j)];
+    sp.angle = h00 * ea.angle + h10 * ea.dangle + h01 * eb.angle + h11 * eb.dangle;
+    sp.lateral = ea.lateral + t * (eb.lateral - ea.lateral);
+    const double lead0 = ea.lead + t * (eb.lead - ea.lead);
+    sp.height = ea.height + t * (eb.height - ea.height);
+    sp.A = ea.A + t * (eb.A - ea.A);
+    sp.f = ea.f + t * (eb.f - ea.f);
+    if (two) {
+      const Entry& fa = a1[q];
+      const Entry& fb = b1[q];
+      const double angle1 = h00 * fa.angle + h10 * fa.dangle + h01 * fb.angle + h11 * fb.dangle;
+      const double lateral1 = fa.lateral + t * (fb.lateral - fa.lateral);
+      const double lead1 = fa.lead + t * (fb.lead - fa.lead);
+      const double height1 = fa.height + t * (fb.height - fa.height);
+      const double A1 = fa.A + t * (fb.A - fa.A);
+      const double f1 = fa.f + t * (fb.f - fa.f);
+      sp.angle += w * (angle1 - sp.angle);
+      sp.lateral += w * (lateral1 - sp.lateral);
+      sp.height += w * (height1 - sp.height);
+      sp.A += w * (A1 - sp.A);
+      sp.f += w * (f1 - sp.f);
+      const double g1 = lead1 * inv_p1;
+      const double g0 = k > 0 ? lead0 * inv_p0 : g1;
+      sp.lead = sign * apsi * (g0 + w * (g1 - g0));
     } else {
-      s.lead = apsi * g0;
+      sp.lead = sign * apsi * lead0 * inv_p0;  // at a node; 0 at psi = 0 (k = 0)
     }
-    s.lead *= sign;
   }
 }
 
@@ -442,6 +483,7 @@ StripContactTable StripContactTable::cached(const WheelRailGeometry& geometry, c
                r.offset + std::size_t(r.j1 - r.j0 + 1) <= t.entries_.size();
         if (ok) {
           if (loaded_from_cache) *loaded_from_cache = true;
+          t.index_near_ranges();
           return t;
         }
       }

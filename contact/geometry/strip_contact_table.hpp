@@ -58,18 +58,25 @@ struct StripTableGrid {
   void validate() const;                                  // InputError naming the field and its range
 };
 
+// No default member initialisers, so that a StripSet's kMax points are not
+// cleared on construction (25 kB; the engine builds sets per evaluation):
+// add points with StripSet::add(), which value-initialises them.
 struct StripPoint {
-  int index = 0;  // strip index along the wheel profile (consecutive = neighbours)
-  double gap = 0.0, angle = 0.0, lateral = 0.0, lead = 0.0, height = 0.0, A = 0.0, f = 0.0;
-  double y_wheel = 0.0;  // wheel-profile lateral coordinate [m]
+  int index;  // strip index along the wheel profile (consecutive = neighbours)
+  double gap, angle, lateral, lead, height, A, f;
+  double y_wheel;  // wheel-profile lateral coordinate [m]
 };
 
-// Strips of one wheel, increasing index; no allocation.
+// Strips of one wheel, increasing index; no allocation. s[0, n) are valid.
 struct StripSet {
   static constexpr int kMax = 320;
   int n = 0;
   double width = 0.0;  // strip width [m]
   StripPoint s[kMax];
+  StripPoint& add() {  // caller checks n < kMax
+    s[n] = StripPoint{};
+    return s[n++];
+  }
 };
 
 struct StripPose {
@@ -123,6 +130,19 @@ class StripContactTable {
     std::size_t offset = 0;     // into entries_
   };
   const Row& row(int k, int i) const { return rows_[std::size_t(k) * std::size_t(ny_) + std::size_t(i)]; }
+  // Per node and level L: the hull [j0, j1] of the strips whose gap at the
+  // node is at most kNearGap[L] (j1 < j0: none). Between nodes the gap stays
+  // within its rows' values (monotone Hermite cells, linear in psi^2), so a
+  // strip whose interpolated gap is at most a cutoff <= kNearGap[L] has a
+  // node of its cell with a gap at most the cutoff: strips() searches only
+  // these hulls. Derived from the entries after a build or a load (not stored).
+  static constexpr int kNearLevels = 3;
+  static constexpr double kNearGap[kNearLevels] = {0.1e-3, 0.25e-3, 0.5e-3};  // [m]
+  struct NearRange {
+    int j0 = 0, j1 = -1;
+  };
+  void index_near_ranges();
+  std::vector<NearRange> near_;
   void locate(double y, double psi, int& i, double& t, int& k, double& wpsi, double& apsi) const;
 
   StripTableGrid grid_;
@@ -131,7 +151,6 @@ class StripContactTable {
   std::vector<double> y_wheel_;  // per strip
   std::vector<Row> rows_;
   std::vector<Entry> entries_;
-  friend struct StripTableIo;
 };
 
 }  // namespace railsim::contact

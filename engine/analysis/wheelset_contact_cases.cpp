@@ -60,7 +60,7 @@ std::vector<WheelsetContactResult> wheelset_contact(const WheelsetContactSetup& 
         if (set.n == contact::StripSet::kMax)
           throw InputError("wheelset contact: more than " + std::to_string(contact::StripSet::kMax) +
                            " strips near the contact at y = " + num(pos.y) + " m: use a wider strip (option strip)");
-        contact::StripPoint& q = set.s[set.n++];
+        contact::StripPoint& q = set.add();
         q.index = index;
         q.gap = std::max(0.0, p.gap);
         q.angle = sg * p.angle;

@@ -19,7 +19,7 @@ contact::StripSet quadratic(double A, double B, double d, int half, double offse
   contact::StripSet s;
   s.width = d;
   for (int j = -half; j <= half && s.n < contact::StripSet::kMax; ++j) {
-    contact::StripPoint& p = s.s[s.n++];
+    contact::StripPoint& p = s.add();
     const double q = j * d;
     p.index = first_index + j + half;
     p.gap = B * q * q + offset;
@@ -62,7 +62,7 @@ TEST_CASE("strip contact: loads are continuous while a second patch closes and m
   contact::StripSet s;
   s.width = d;
   for (int j = 0; j <= 100; ++j) {
-    contact::StripPoint& p = s.s[s.n++];
+    contact::StripPoint& p = s.add();
     const double q = j * d;
     const double g1 = B * q * q, g2 = B * (q - 0.02) * (q - 0.02) * 1.0 + 30e-6;
     p.index = j;
