@@ -8,7 +8,8 @@ Data::Data(const Model& model)
       force(model.bodies.size()),
       track(model.bodies.size()),
       vehicle_motion(model.bodies.size()),
-      wheel(2 * model.wheelsets.size()) {
+      wheel(2 * model.wheelsets.size()),
+      patch(2 * model.wheelsets.size() * WheelGeometry::kMaxPoints) {
   for (std::size_t i = 0; i < wheel.size(); ++i) workspace.push_back(model.coupling.make_workspace());
   failure.reserve(512);
   first_invalid_reason.reserve(128);
