@@ -46,7 +46,7 @@ ModelAudit statistics(const std::string& name, const std::vector<double>& errors
                       double tolerance) {
   ModelAudit a;
   a.model = name;
-  std::vector<double> errs;
+  std::vector<double> errs, costs;
   double ns = 0.0;
   for (std::size_t s = 0; s < errors.size(); ++s) {
     if (!audited[s]) continue;
@@ -55,6 +55,7 @@ ModelAudit statistics(const std::string& name, const std::vector<double>& errors
     else {
       if (!forces[s].valid) ++a.flagged_invalid;
       ns += cost[s];
+      costs.push_back(cost[s]);
     }
     if (errs.empty() || e > a.max_error) {
       a.max_error = e;
@@ -73,6 +74,13 @@ ModelAudit statistics(const std::string& name, const std::vector<double>& errors
     a.p95_error = sorted[std::min(k, sorted.size() - 1)];
     const std::size_t solved = errs.size() - static_cast<std::size_t>(a.failed);
     a.mean_cost_ns = !cost_measured ? kNaN : solved > 0 ? ns / static_cast<double>(solved) : 0.0;
+    a.median_cost_ns = 0.0;
+    if (!cost_measured) a.median_cost_ns = kNaN;
+    else if (!costs.empty()) {
+      std::sort(costs.begin(), costs.end());
+      const std::size_t h = costs.size() / 2;
+      a.median_cost_ns = costs.size() % 2 ? costs[h] : 0.5 * (costs[h - 1] + costs[h]);
+    }
   }
   a.meets_tolerance = !errs.empty() && a.failed == 0 && a.max_error <= tolerance;
   return a;
@@ -85,7 +93,7 @@ std::vector<std::string> ContactAuditResult::meeting_tolerance() const {
     if (m.meets_tolerance) ok.push_back(&m);
   // Unmeasured costs (NaN) last.
   const auto key = [](const ModelAudit* m) {
-    return std::isnan(m->mean_cost_ns) ? std::numeric_limits<double>::infinity() : m->mean_cost_ns;
+    return std::isnan(m->median_cost_ns) ? std::numeric_limits<double>::infinity() : m->median_cost_ns;
   };
   std::stable_sort(ok.begin(), ok.end(), [&](const ModelAudit* a, const ModelAudit* b) { return key(a) < key(b); });
   std::vector<std::string> names;
@@ -204,6 +212,16 @@ void audit_given_forces(ContactAuditResult& r, const std::string& name, const st
   r.cost_ns.push_back(cost);
 }
 
+std::string cheapest_within(const ContactAuditResult& r, double tolerance) {
+  const ModelAudit* best = nullptr;
+  const auto key = [](const ModelAudit& m) {
+    return std::isnan(m.median_cost_ns) ? std::numeric_limits<double>::infinity() : m.median_cost_ns;
+  };
+  for (const auto& m : r.models)
+    if (m.failed == 0 && m.max_error <= tolerance && (!best || key(m) < key(*best))) best = &m;
+  return best ? best->model : std::string();
+}
+
 AuditVerdict audit_verdict(const ContactAuditResult& r, const std::string& run_model) {
   AuditVerdict v;
   v.run_model = run_model;
@@ -215,12 +233,12 @@ AuditVerdict audit_verdict(const ContactAuditResult& r, const std::string& run_m
   if (!ok.empty()) v.cheapest_meeting = ok.front();
   for (const auto& n : ok) {
     const ModelAudit& m = r.models[static_cast<std::size_t>(r.find(n))];
-    if (n != run_model && m.mean_cost_ns < run.mean_cost_ns) v.cheaper_meeting.push_back(n);  // NaN: never
+    if (n != run_model && m.median_cost_ns < run.median_cost_ns) v.cheaper_meeting.push_back(n);  // NaN: never
   }
   const ModelAudit* best = nullptr;
   for (const auto& m : r.models)
     if (!best || m.max_error < best->max_error ||
-        (m.max_error == best->max_error && m.mean_cost_ns < best->mean_cost_ns))
+        (m.max_error == best->max_error && m.median_cost_ns < best->median_cost_ns))
       best = &m;
   if (best) v.most_accurate = best->model;
   return v;

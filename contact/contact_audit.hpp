@@ -13,7 +13,8 @@
 // states the model flagged invalid, the mean cost per call (steady clock;
 // per state the mean of repeated calls until 20 us have passed, at most 64,
 // the reference one call: indicative only, bench/ measures costs) and
-// whether max <= tolerance.
+// whether max <= tolerance. Costs are compared by their median over the
+// states (one preempted timing on a shared machine moves the mean by orders).
 // A model that throws on a state (NumericalError) counts as failing there
 // (error +inf). States without load (Fz <= 0) or without a patch (a or b
 // not positive, e.g. prescribed creep coefficients) are skipped.
@@ -55,6 +56,7 @@ struct ModelAudit {
   int flagged_invalid = 0;      // states the model itself flagged outside its domain
   int failed = 0;               // states where the model threw
   double mean_cost_ns = 0.0;    // per call, indicative; NaN when not measured (given forces)
+  double median_cost_ns = 0.0;  // median over the states (robust to a preempted timing); what ranks costs
   bool meets_tolerance = false;
 };
 
@@ -68,8 +70,8 @@ struct ContactAuditResult {
   std::vector<std::vector<double>> cost_ns;        // cost_ns[m][s] of the one call, NaN where skipped or given
   double tolerance = 0.0;
   int mim_grid = 0;
-  // Names of the audited models meeting the tolerance, cheapest first
-  // (models without a measured cost last).
+  // Names of the audited models meeting the tolerance, cheapest (median
+  // cost) first; models without a measured cost last.
   std::vector<std::string> meeting_tolerance() const;
   // Index of a model by name, -1 if not audited.
   int find(const std::string& model) const;
@@ -85,6 +87,11 @@ ContactAuditResult audit_contacts(const std::vector<ContactInput>& states, const
 // Throws InputError when the sizes differ or the name is already audited.
 void audit_given_forces(ContactAuditResult& result, const std::string& name, const std::vector<ContactInput>& states,
                         const std::vector<ContactForces>& forces);
+
+// The cheapest audited model (median cost; unmeasured costs last) whose max
+// error is within `tolerance` and that never failed, read from the table
+// (any tolerance, not only the audit's own); "" when none.
+std::string cheapest_within(const ContactAuditResult& result, double tolerance);
 
 struct AuditVerdict {
   std::string run_model;

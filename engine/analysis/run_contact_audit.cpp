@@ -29,6 +29,16 @@ bool is_registry_model(const std::string& name, bool* tabulated) {
   return false;
 }
 
+double reference_median_us(const contact::ContactAuditResult& r) {
+  std::vector<double> c;
+  for (std::size_t s = 0; s < r.audited.size(); ++s)
+    if (r.audited[s]) c.push_back(r.reference_cost_ns[s]);
+  if (c.empty()) return kNaN;
+  std::sort(c.begin(), c.end());
+  const std::size_t h = c.size() / 2;
+  return 1e-3 * (c.size() % 2 ? c[h] : 0.5 * (c[h - 1] + c[h]));
+}
+
 std::string as_run_name(const std::string& run_model) { return run_model + " (as run)"; }
 }  // namespace
 
@@ -121,14 +131,19 @@ results::Json contact_audit_json(const RunContactAudit& a, const Model& /*model*
   for (const auto& n : v.cheaper_meeting) ch.push(n);
   j.set("cheaper_than_run_model_meeting_tolerance", ch);
   j.set("most_accurate", v.most_accurate);
+  Json ladder = Json::array();
+  for (const double pct : {1.0, 2.0, 5.0, 10.0, 20.0}) {
+    const std::string m = contact::cheapest_within(r, pct / 100.0);
+    Json e = Json::object();
+    e.set("tolerance_pct", pct);
+    e.set("cheapest", m.empty() ? Json() : Json(m));
+    ladder.push(e);
+  }
+  j.set("cheapest_by_tolerance", ladder);
   Json ok = Json::array();
   for (const auto& n : r.meeting_tolerance()) ok.push(n);
   j.set("meeting_tolerance_cheapest_first", ok);
-  double ref_ns = 0.0;
-  long ref_n = 0;
-  for (std::size_t s = 0; s < r.audited.size(); ++s)
-    if (r.audited[s]) ref_ns += r.reference_cost_ns[s], ++ref_n;
-  j.set("reference_mean_cost_us", ref_n > 0 ? ref_ns / static_cast<double>(ref_n) * 1e-3 : kNaN);
+  j.set("reference_median_cost_us", reference_median_us(r));
   Json models = Json::array();
   for (const auto& m : r.models) {
     Json e = Json::object();
@@ -139,14 +154,16 @@ results::Json contact_audit_json(const RunContactAudit& a, const Model& /*model*
     e.set("worst_state", static_cast<long>(m.worst_state));
     e.set("worst_state_time", a.states[m.worst_state].t);
     e.set("mean_cost_us", m.mean_cost_ns * 1e-3);
+    e.set("median_cost_us", m.median_cost_ns * 1e-3);
     e.set("flagged_invalid", m.flagged_invalid);
     e.set("failed", m.failed);
     e.set("meets_tolerance", m.meets_tolerance);
     models.push(e);
   }
   j.set("models", models);
-  j.set("costs", "steady clock, one call per state, on the audit's worker threads: indicative only (the benchmarks in "
-                 "bench/ measure costs)");
+  j.set("costs", "steady clock, per state the mean of repeated calls until 20 us (at most 64; the reference one call), "
+                 "on the audit's worker threads; models are ranked by the median over the states: indicative only "
+                 "(the benchmarks in bench/ measure costs)");
   j.set("wall_time", a.wall_seconds);
   return j;
 }
@@ -156,40 +173,36 @@ results::Chart contact_audit_chart(const RunContactAudit& a, const std::string& 
   const auto& r = a.result;
   results::Chart c;
   c.title = "contact audit, " + std::to_string(a.states.size()) + " states of the run: " + title_tail;
-  c.xlabel = "mean cost per call [us]";
+  c.xlabel = "cost per call, median over the states [us]";
   c.ylabel = "error vs MIM grid " + std::to_string(r.mim_grid) + " [% of mu Fz]";
   c.logx = c.logy = true;
   c.legend = "outside";
   results::ChartSeries mx{"max over the states", {}, {}, "markers", "tab:blue"};
-  results::ChartSeries p95{"95th percentile", {}, {}, results::custom_style("o", "", true, 6), "tab:blue"};
+  results::ChartSeries p95{"95th percentile", {}, {}, results::custom_style("o", "", true, 10), "tab:green"};
   results::ChartSeries run{"the run's model (" + a.run_model + ")", {}, {}, results::custom_style("*", "", false, 16),
                            "tab:red"};
   for (const auto& m : r.models) {
     const double y = std::max(100.0 * m.max_error, kFloorPct);
-    if (!std::isfinite(m.mean_cost_ns)) {  // forces given by the run: no cost measured
+    if (!std::isfinite(m.median_cost_ns)) {  // forces given by the run: no cost measured
       c.lines.push_back({y, m.model + ": max " + config::format_number(std::round(y * 100) / 100) + " %",
                          "tab:red", false});
       continue;
     }
-    const double x = m.mean_cost_ns * 1e-3;
+    const double x = m.median_cost_ns * 1e-3;
     mx.x.push_back(x);
     mx.y.push_back(std::isfinite(y) ? y : 1e3);
     p95.x.push_back(x);
     p95.y.push_back(std::max(100.0 * m.p95_error, kFloorPct));
     if (m.model == a.run_model) run.x.push_back(x), run.y.push_back(y);
-    c.annotations.push_back({m.model, {x, y}});
+    c.annotations.push_back({m.model == "mim" ? "mim (its default grid)" : m.model, {x, y}});
   }
   c.series = {mx, p95};
   if (!run.x.empty()) c.series.push_back(run);
   c.lines.push_back({100.0 * r.tolerance, "tolerance " + config::format_number(100.0 * r.tolerance) + " %", "k",
                      false});
-  double ref_ns = 0.0;
-  long n = 0;
-  for (std::size_t s = 0; s < r.audited.size(); ++s)
-    if (r.audited[s]) ref_ns += r.reference_cost_ns[s], ++n;
-  if (n > 0)
-    c.lines.push_back({ref_ns / static_cast<double>(n) * 1e-3, "MIM reference (grid " + std::to_string(r.mim_grid) + ")",
-                       "0.5", true});
+  const double ref_us = reference_median_us(r);
+  if (std::isfinite(ref_us))
+    c.lines.push_back({ref_us, "MIM reference (grid " + std::to_string(r.mim_grid) + ")", "0.5", true});
   const auto& v = a.verdict;
   c.note = "run's model " + a.run_model + (v.run_meets ? " meets" : " misses") + " the tolerance; cheapest meeting it: " +
            (v.cheapest_meeting.empty() ? std::string("none") : v.cheapest_meeting);

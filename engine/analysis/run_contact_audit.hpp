@@ -20,7 +20,7 @@
 // b, A, B, p0, Fz, xi, eta, phi, mu, k11, k22, k23, V, why it was chosen; the
 // model's Fx, Fy, Mz, valid, the MIM reference Fx, Fy, Mz, the error in % of
 // mu Fz, the time of the call in us), and DIR/contact_audit.png: max error
-// against mean cost per call per model (log-log), p95 as hollow markers, the
+// against the median cost per call per model (log-log), p95 as hollow markers, the
 // run's model highlighted, the tolerance and the MIM reference's cost drawn.
 // Units SI; errors as fractions of mu Fz (per cent in the files); costs in ns
 // (us in the files).

@@ -143,6 +143,13 @@ TEST_CASE("contact audit: threads, given forces, and the verdict read from the t
   const ModelAudit& ref = r.models.back();
   CHECK(ref.max_error == 0.0);
   CHECK(std::isnan(ref.mean_cost_ns));
+  CHECK(std::isnan(ref.median_cost_ns));
+  for (const auto& m : one.models) {  // the median of the per-state costs
+    std::vector<double> c = one.cost_ns[static_cast<std::size_t>(one.find(m.model))];
+    std::sort(c.begin(), c.end());
+    const std::size_t h = c.size() / 2;
+    CHECK(m.median_cost_ns == (c.size() % 2 ? c[h] : 0.5 * (c[h - 1] + c[h])));
+  }
   CHECK(ref.meets_tolerance);
   audit_given_forces(r, "fastrip (given)", states, r.forces[3]);
   CHECK(r.models.back().max_error == r.models[3].max_error);
@@ -165,14 +172,15 @@ TEST_CASE("contact audit: threads, given forces, and the verdict read from the t
       for (double e : r.errors[m]) mx = std::max(mx, e);
       const bool meets = mx <= o.tolerance;
       CHECK(r.models[m].meets_tolerance == meets);
-      const double cost = std::isnan(r.models[m].mean_cost_ns) ? INFINITY : r.models[m].mean_cost_ns;
+      const double cost = std::isnan(r.models[m].median_cost_ns) ? INFINITY : r.models[m].median_cost_ns;
       if (meets && (cheapest.empty() || cost < cheapest_cost)) cheapest = r.models[m].model, cheapest_cost = cost;
-      if (meets && r.models[m].model != run && r.models[m].mean_cost_ns < rm.mean_cost_ns)
+      if (meets && r.models[m].model != run && r.models[m].median_cost_ns < rm.median_cost_ns)
         cheaper.push_back(r.models[m].model);
       if (mx < best_error) best_error = mx, best = r.models[m].model;
     }
     CHECK(v.run_meets == rm.meets_tolerance);
     CHECK(v.cheapest_meeting == cheapest);
+    CHECK(cheapest_within(r, o.tolerance) == cheapest);
     CHECK(v.most_accurate == best);
     std::vector<std::string> got = v.cheaper_meeting;
     std::sort(got.begin(), got.end());
@@ -194,7 +202,7 @@ TEST_CASE("contact audit: verdict edge cases on a hand-made table", "[contact][a
     ModelAudit a;
     a.model = name;
     a.max_error = mx;
-    a.mean_cost_ns = cost;
+    a.median_cost_ns = a.mean_cost_ns = cost;
     a.meets_tolerance = meets;
     return a;
   };
@@ -216,4 +224,11 @@ TEST_CASE("contact audit: verdict edge cases on a hand-made table", "[contact][a
   r.models[0].meets_tolerance = r.models[1].meets_tolerance = r.models[3].meets_tolerance =
       r.models[4].meets_tolerance = false;
   CHECK(audit_verdict(r, "cheap_bad").cheapest_meeting.empty());
+  // Other tolerances read from the same table (max error and cost only).
+  CHECK(cheapest_within(r, 0.5) == "cheap_bad");
+  CHECK(cheapest_within(r, 0.016) == "fast_ok");
+  CHECK(cheapest_within(r, 0.005) == "slow_exact");
+  CHECK(cheapest_within(r, 0.0005).empty());
+  r.models[2].failed = 1;
+  CHECK(cheapest_within(r, 0.5) == "fast_ok");
 }

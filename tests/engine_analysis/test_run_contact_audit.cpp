@@ -97,12 +97,19 @@ TEST_CASE("contact audit of a run: reference, reproduction, table and verdict", 
     CHECK(m["max_error_pct"].get<double>() == Approx(mx).epsilon(1e-6));
     const bool meets = m["max_error_pct"].get<double>() <= 5.0 && m["failed"].get<long>() == 0;
     CHECK(m["meets_tolerance"].get<bool>() == meets);
-    const double cost = m["mean_cost_us"].get<double>();
+    const double cost = m["median_cost_us"].get<double>();
     if (meets && cost < cheapest_cost) cheapest_cost = cost, cheapest = m["model"].get<std::string>();
     if (mx < best_error) best_error = mx, best = m["model"].get<std::string>();
     if (m["model"] == "chopaya") run_error = mx;
   }
   CHECK(ca["cheapest_meeting_tolerance"] == cheapest);
+  bool ladder = false;
+  for (const auto& e : ca["cheapest_by_tolerance"])
+    if (e["tolerance_pct"].get<double>() == 5.0) {
+      ladder = true;
+      CHECK(e["cheapest"] == cheapest);
+    }
+  CHECK(ladder);
   CHECK(ca["most_accurate"] == best);
   CHECK(ca["run_model_meets_tolerance"].get<bool>() == (run_error <= 5.0));
   CHECK(std::filesystem::exists(out + "/contact_audit.png.json"));
