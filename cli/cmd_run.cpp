@@ -7,6 +7,10 @@
 // verdict) before exiting with code 3; a derailment is a result (status
 // "derailed", running safety failed), exit 0; bad input (including a bad
 // --set) exits 2 naming the option.
+#include <algorithm>
+#include <cmath>
+#include <thread>
+
 #include "cli/commands.hpp"
 #include "cli/support_scenario_overrides.hpp"
 #include "core/errors.hpp"
@@ -22,9 +26,19 @@ struct RunArgs {
   std::string out = "out";
   double speed_kmh = -1.0;  // not given
   std::vector<std::string> sets;
+  int contact_audit = 0;          // states to audit (when audit_given)
+  bool audit_given = false;
+  double audit_tolerance = 2.0;   // [% of mu N]
+  int audit_threads = 0;          // 0: the machine's cores
 };
 
 int run_scenario(const RunArgs& a) {
+  if (a.audit_given && (a.contact_audit < engine::kMinAuditSamples || a.contact_audit > engine::kMaxAuditSamples))
+    throw InputError("--contact-audit " + std::to_string(a.contact_audit) + ": the number of contact states must "
+                     "lie in [1, " + std::to_string(engine::kMaxAuditSamples) + "]");
+  if (!(std::isfinite(a.audit_tolerance) && a.audit_tolerance > 0.0 && a.audit_tolerance <= 100.0))
+    throw InputError("--audit-tolerance: must be a finite per cent of mu N in (0, 100]");
+  if (a.audit_threads < 0 || a.audit_threads > 64) throw InputError("--audit-threads: must lie in [0, 64]");
   std::vector<ScenarioOverride> overrides;
   for (const auto& s : a.sets) overrides.push_back(parse_set_option(s));
   if (a.speed_kmh > 0.0) overrides.push_back(speed_kmh_override(a.speed_kmh));
@@ -32,6 +46,10 @@ int run_scenario(const RunArgs& a) {
   engine::ScenarioRunOptions o;
   o.out_dir = a.out;
   for (const auto& ov : overrides) o.overrides.push_back(ov.option);
+  o.contact_audit.samples = a.audit_given ? a.contact_audit : 0;
+  o.contact_audit.tolerance = a.audit_tolerance / 100.0;
+  o.contact_audit.threads =
+      a.audit_threads > 0 ? a.audit_threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   try {
     engine::run_scenario(loaded.scenario, o);
   } catch (const InputError& e) {
@@ -53,7 +71,18 @@ void register_run(CLI::App& app, CommandRunner& run) {
   cmd->add_option("--set", args->sets,
                   "Override a scenario key: key=value, dotted path (contact.material.mu=0.2, "
                   "track.segments[2].radius=500, initial[ws1.lateral]=0.007); repeatable");
-  cmd->callback([args, &run] { run = [args] { return run_scenario(*args); }; });
+  auto* audit = cmd->add_option("--contact-audit", args->contact_audit,
+                  "Audit N of the run's own contact states (1..10000; the extremes and the rest evenly in time) "
+                  "with MIM (grid 60) and every registered model: contact_audit.csv, contact_audit.png, summary.json");
+  cmd->add_option("--audit-tolerance", args->audit_tolerance,
+                  "Contact audit: error a model may reach, per cent of mu N (0 < PCT <= 100)")
+      ->capture_default_str();
+  cmd->add_option("--audit-threads", args->audit_threads, "Contact audit: worker threads (0: all cores, at most 64)")
+      ->capture_default_str();
+  cmd->callback([args, &run, audit] {
+    args->audit_given = audit->count() > 0;
+    run = [args] { return run_scenario(*args); };
+  });
 }
 
 }  // namespace railsim::cli

@@ -29,6 +29,16 @@ struct WheelOutput {
   double contact_lead = 0.0;    // [m] of the most loaded point, ahead of the axle
   bool valid = true;
   const char* reason = "";
+  int patches = 0;  // loaded patches recorded in Data::patch (Data::record_patches only)
+};
+
+// One loaded contact patch of the last evaluation: the tangential model's
+// input and what it returned (Data::record_patches; the contact audit).
+struct PatchState {
+  contact::ContactInput input;
+  contact::ContactForces forces;
+  int point = 0;               // index of the potential contact point / patch of the wheel
+  double contact_angle = 0.0;  // [rad]
 };
 
 struct Data {
@@ -43,6 +53,11 @@ struct Data {
   // two bodies act on.
   std::vector<BodyMotion> vehicle_motion;
   std::vector<WheelOutput> wheel;      // 2 per wheelset: left, right
+  // Off by default; simulate() sets it on its reporting Data only: then every
+  // evaluation keeps each wheel's loaded patches (N > 1 N) in
+  // patch[wheel * WheelGeometry::kMaxPoints + k], k < wheel[].patches.
+  bool record_patches = false;
+  std::vector<PatchState> patch;
   // State derivative at the reported output: simulate() (simulation.hpp) sets
   // it before calling the observer, so recorders can form accelerations
   // (engine/analysis/run_history.hpp). Empty in other uses of Data.

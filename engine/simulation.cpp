@@ -24,6 +24,7 @@ double thread_cpu_seconds() {
 RunSummary simulate(const Model& model, const IntegratorOptions& options, const Eigen::VectorXd& x0,
                     double duration, double dt_out, const Observer& observer) {
   Data data(model), rec(model);
+  rec.record_patches = true;  // the reported outputs carry each patch's contact input (contact audit)
   ModelOde ode(model, data);
   auto integ = make_integrator(ode, options);
   RunSummary sum;

@@ -22,7 +22,8 @@ std::unique_ptr<contact::TangentialWorkspace> WheelRailCoupling::make_workspace(
 
 contact::ContactForces WheelRailCoupling::forces(const ContactPointGeometry& g, double N, double N_static,
                                                  const contact::Creepages& cr_in, double V,
-                                                 contact::TangentialWorkspace* ws) const {
+                                                 contact::TangentialWorkspace* ws,
+                                                 contact::ContactInput* used) const {
   contact::ContactForces out;
   if (N <= 1.0) return out;  // no load, no creep force (DYTSI: N <= 1 N)
   contact::Creepages cr = cr_in;
@@ -39,6 +40,18 @@ contact::ContactForces WheelRailCoupling::forces(const ContactPointGeometry& g, 
     a = opt_.patch_a * s;
     b = opt_.patch_b * s;
   }
+  contact::ContactInput in;
+  in.patch.a = a;
+  in.patch.b = b;
+  in.patch.Fz = N;
+  in.patch.A = g.A;
+  in.patch.B = g.B;
+  in.patch.p0 = (a > 0 && b > 0) ? 1.5 * N / (M_PI * a * b) : 0.0;
+  in.creep = cr;
+  in.material = opt_.material;
+  in.reduction = opt_.reduction;
+  in.rolling_speed = V;
+  if (used) *used = in;
   if (!model_) {
     double f11, f22, f23, f33;
     if (opt_.f11 > 0) {
@@ -84,17 +97,6 @@ contact::ContactForces WheelRailCoupling::forces(const ContactPointGeometry& g, 
     }
     return out;
   }
-  contact::ContactInput in;
-  in.patch.a = a;
-  in.patch.b = b;
-  in.patch.Fz = N;
-  in.patch.A = g.A;
-  in.patch.B = g.B;
-  in.patch.p0 = (a > 0 && b > 0) ? 1.5 * N / (M_PI * a * b) : 0.0;
-  in.creep = cr;
-  in.material = opt_.material;
-  in.reduction = opt_.reduction;
-  in.rolling_speed = V;
   return model_->solve(in, ws);
 }
 

@@ -55,9 +55,12 @@ class WheelRailCoupling {
   const contact::TangentialModel* model() const { return model_.get(); }
   std::unique_ptr<contact::TangentialWorkspace> make_workspace() const;
   // Creep forces for one contact. N: normal load [N]; N_static: static load of
-  // this wheel (reference when N_ref = 0). No allocation.
+  // this wheel (reference when N_ref = 0). No allocation. `used` (optional):
+  // receives the contact input the forces were computed from (patch at this
+  // load, creepages, material, reductions; in both modes).
   contact::ContactForces forces(const ContactPointGeometry& g, double N, double N_static, const contact::Creepages& cr,
-                                double V, contact::TangentialWorkspace* ws) const;
+                                double V, contact::TangentialWorkspace* ws,
+                                contact::ContactInput* used = nullptr) const;
   std::string describe() const;
 
  private:

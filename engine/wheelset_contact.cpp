@@ -406,8 +406,11 @@ bool wheelset_forces(const Model& model, Data& d, int w, const double* x, double
       const double cd = std::cos(c.contact_angle);
       const double a = c.lateral, r = c.rolling_radius;
       const contact::Creepages cr = wheel_creepages(k, c, side);
-      const contact::ContactForces cf =
-          model.coupling.forces(c, Np, ws.static_load[i], cr, d.V, d.workspace[2 * w + i].get());
+      PatchState* rec =  // the reporting evaluation keeps each loaded patch's input (contact audit)
+          d.record_patches && Np > 1.0 ? &d.patch[(2 * w + i) * WheelGeometry::kMaxPoints + out.patches++] : nullptr;
+      const contact::ContactForces cf = model.coupling.forces(c, Np, ws.static_load[i], cr, d.V,
+                                                              d.workspace[2 * w + i].get(), rec ? &rec->input : nullptr);
+      if (rec) rec->forces = cf, rec->point = p, rec->contact_angle = c.contact_angle;
       const double th = c.contact_angle + (track_angles ? 0.0 : side * k.phi);
       const double ct = std::cos(th), st = std::sin(th);
       const double X = cf.Fx - cf.Fy * k.psi * cd;

@@ -572,6 +572,36 @@ bool chart_sum_y_rms(const engine::RunSafety& rs, const ChartContext& ctx, resul
   return true;
 }
 
+// The contact audit of the recorded states into the summary, the CSV and the chart.
+void audit_run(const engine::Scenario& sc, const ContactStateRecorder& rec, const ScenarioRunOptions& o,
+               ScenarioRunResult& out) {
+  const auto& m = sc.model;
+  const std::string model = m.coupling.options().tangential;
+  spdlog::info("contact audit: {} of the run's {} contact states, MIM grid {}, every registered model ({} threads)",
+               std::min<std::size_t>(static_cast<std::size_t>(o.contact_audit.samples), rec.states().size()),
+               rec.states().size(), o.contact_audit.mim_grid, o.contact_audit.threads);
+  out.contact_audit = run_contact_audit(rec, model, o.contact_audit);
+  out.audited = true;
+  const RunContactAudit& a = out.contact_audit;
+  out.summary.set("contact_audit", contact_audit_json(a, m));
+  if (!o.out_dir.empty()) {
+    write_contact_audit_csv(a, m, o.out_dir + "/contact_audit.csv");
+    const std::string tail = m.vehicle_name + ", " + config::format_number(std::round(m.speed.v0 * 3.6 * 10) / 10) +
+                             " km/h, " + sc.name;
+    results::draw(contact_audit_chart(a, tail), o.out_dir + "/contact_audit.png");
+  }
+  for (const auto& ma : a.result.models)
+    spdlog::info("  {:<22} max {:>7.3f} %  p95 {:>7.3f} % of mu N  {:>10.3f} us/call (median){}{}", ma.model,
+                 100 * ma.max_error, 100 * ma.p95_error, ma.median_cost_ns * 1e-3, ma.meets_tolerance ? "  meets" : "",
+                 ma.model == a.run_model ? "  <- the run's model" : "");
+  const auto& v = a.verdict;
+  spdlog::info("contact audit: the run's model {} {} the tolerance {:.3g} % of mu N (max {:.3g} %); cheapest meeting "
+               "it: {}; most accurate: {} ({:.3g} s)",
+               a.run_model, v.run_meets ? "meets" : "misses", 100 * a.result.tolerance,
+               100 * a.result.models[static_cast<std::size_t>(v.run_index)].max_error,
+               v.cheapest_meeting.empty() ? "none" : v.cheapest_meeting, v.most_accurate, a.wall_seconds);
+}
+
 struct Evaluation {
   double seconds = 0.0, cpu_seconds = 0.0, chart_seconds = 0.0;
   bool pass = true;
@@ -656,6 +686,17 @@ ScenarioRunResult run_scenario(const Scenario& sc, const ScenarioRunOptions& o) 
     if (ec) throw InputError(o.out_dir + ": cannot create the output folder (" + ec.message() + ")");
   }
   const auto& m = sc.model;
+  const bool audit = o.contact_audit.samples != 0;
+  if (audit) {  // bad audit options are bad input before any work
+    const auto& ca = o.contact_audit;
+    if (ca.samples < kMinAuditSamples || ca.samples > kMaxAuditSamples)
+      throw InputError("contact audit: samples " + std::to_string(ca.samples) + " outside [1, 10000]");
+    if (!(ca.tolerance > 0.0 && ca.tolerance <= 1.0))
+      throw InputError("contact audit: tolerance must lie in (0, 1] of mu N");
+    if (ca.threads < 1 || ca.threads > 64) throw InputError("contact audit: threads outside [1, 64]");
+    if (ca.mim_grid < 8 || ca.mim_grid > 400) throw InputError("contact audit: MIM grid outside [8, 400]");
+  }
+  ContactStateRecorder contacts;
   spdlog::info("scenario '{}': vehicle '{}', {} states, {} wheelset model, {}, {:.4g} km/h", sc.name, m.vehicle_name,
                m.n_states, wheelset_model_name(m.wheelset_model), sc.integrator.method, m.speed.v0 * 3.6);
   for (const auto& ov : o.overrides) spdlog::info("  override {}", ov);
@@ -707,6 +748,7 @@ ScenarioRunResult run_scenario(const Scenario& sc, const ScenarioRunOptions& o) 
                     history.last_channel_values(row);
                     if (csv) csv->row(row);
                     if (o.keep_channels) out.channels.insert(out.channels.end(), row.begin(), row.end());
+                    if (audit) contacts.record(m, t, d);
                     ++out.rows;
                   });
   } catch (const DerailmentError& e) {
@@ -718,6 +760,7 @@ ScenarioRunResult run_scenario(const Scenario& sc, const ScenarioRunOptions& o) 
     summary["running_safety"].set("pass", false);
     summary["running_safety"].set("derailment", e.what());
     spdlog::warn("{}", e.what());
+    if (audit && !contacts.states().empty()) audit_run(sc, contacts, o, out);  // the states up to the derailment
     if (files) summary.write_file(o.out_dir + "/summary.json");
     out.derailed = true;
     out.derailment = e.what();
@@ -780,6 +823,7 @@ ScenarioRunResult run_scenario(const Scenario& sc, const ScenarioRunOptions& o) 
   et.set("evaluation_share_of_run_cpu", rs.cpu_time > 0 ? ev.cpu_seconds / rs.cpu_time : 0.0);
   et.set("charts_wall_time", ev.chart_seconds);
   summary.set("post_processing", et);
+  if (audit) audit_run(sc, contacts, o, out);
   if (files) summary.write_file(o.out_dir + "/summary.json");
   spdlog::info("done: {:.3g} s simulated in {:.3g} s wall ({:.3g}x real time; {:.3g}x on CPU time), {} steps, {} rhs "
                "calls, max |y| relative to the rails {:.3g} mm (absolute {:.3g} mm)",

@@ -24,12 +24,18 @@
 // physics) and then throws the NumericalError on. A derailment
 // (DerailmentError: a wheelset past its flange) is a result: status
 // "derailed", the running safety up to it, failed, and `derailed` set.
+//
+// With ScenarioRunOptions::contact_audit.samples > 0 (`railsim run
+// --contact-audit N`): the contact audit of the run (run_contact_audit.hpp) on
+// N of its own contact states, after a complete run or up to a derailment:
+// summary.json `contact_audit`, DIR/contact_audit.csv and DIR/contact_audit.png.
 #pragma once
 
 #include <cstddef>
 #include <string>
 #include <vector>
 
+#include "engine/analysis/run_contact_audit.hpp"
 #include "engine/scenario.hpp"
 #include "engine/simulation.hpp"
 #include "results/json_writer.hpp"
@@ -40,6 +46,7 @@ struct ScenarioRunOptions {
   std::string out_dir;         // empty: no files
   bool keep_channels = false;  // keep every channel row in memory (ScenarioRunResult::channels)
   std::vector<std::string> overrides;  // how the scenario was varied (e.g. "--set contact.material.mu=0.2"), recorded
+  RunContactAuditOptions contact_audit;  // samples = 0 (the default): no contact audit
 };
 
 struct ScenarioRunResult {
@@ -50,10 +57,13 @@ struct ScenarioRunResult {
   RunSummary run;
   bool derailed = false;         // the run ended in a derailment (physics)
   std::string derailment;        // its message
+  bool audited = false;          // the contact audit ran (options.contact_audit.samples > 0)
+  RunContactAudit contact_audit;
 };
 
-// Throws InputError for a bad running_safety section (before running) or an
-// output folder that cannot be made, NumericalError when the run fails.
+// Throws InputError for a bad running_safety section or contact-audit options
+// (before running) or an output folder that cannot be made, NumericalError
+// when the run fails.
 ScenarioRunResult run_scenario(const Scenario& scenario, const ScenarioRunOptions& options);
 
 }  // namespace railsim::engine

@@ -119,3 +119,116 @@ TEST_CASE("contact audit: every registered model by default, bad input named", "
   bad.mim_grid = 4;
   CHECK_THROWS_WITH(audit_contacts(one, bad), Catch::Contains("[8, 400]"));
 }
+
+TEST_CASE("contact audit: threads, given forces, and the verdict read from the table", "[contact][audit]") {
+  const auto set = sample();
+  std::vector<ContactInput> states;
+  for (const auto& s : set) states.push_back(s.in);
+  ContactAuditOptions o;
+  o.mim_grid = 20;
+  o.tolerance = 0.12;
+  o.models = {"linear_sat", "chopaya", "fastsim", "fastrip", "polach"};
+  const ContactAuditResult one = audit_contacts(states, o);
+  o.threads = 2;
+  const ContactAuditResult two = audit_contacts(states, o);
+  for (std::size_t s = 0; s < states.size(); ++s) {
+    CHECK(two.reference[s].Fx == one.reference[s].Fx);
+    CHECK(two.reference[s].Fy == one.reference[s].Fy);
+    for (std::size_t m = 0; m < one.models.size(); ++m) CHECK(two.errors[m][s] == one.errors[m][s]);
+  }
+
+  // Forces given from elsewhere: the reference itself has no error; a model's own forces its statistics.
+  ContactAuditResult r = one;
+  audit_given_forces(r, "reference", states, r.reference);
+  const ModelAudit& ref = r.models.back();
+  CHECK(ref.max_error == 0.0);
+  CHECK(std::isnan(ref.mean_cost_ns));
+  CHECK(std::isnan(ref.median_cost_ns));
+  for (const auto& m : one.models) {  // the median of the per-state costs
+    std::vector<double> c = one.cost_ns[static_cast<std::size_t>(one.find(m.model))];
+    std::sort(c.begin(), c.end());
+    const std::size_t h = c.size() / 2;
+    CHECK(m.median_cost_ns == (c.size() % 2 ? c[h] : 0.5 * (c[h - 1] + c[h])));
+  }
+  CHECK(ref.meets_tolerance);
+  audit_given_forces(r, "fastrip (given)", states, r.forces[3]);
+  CHECK(r.models.back().max_error == r.models[3].max_error);
+  CHECK(r.models.back().p95_error == r.models[3].p95_error);
+  CHECK(r.models.back().worst_state == r.models[3].worst_state);
+  CHECK(r.models.back().flagged_invalid == r.models[3].flagged_invalid);
+  CHECK_THROWS_AS(audit_given_forces(r, "fastrip", states, r.reference), railsim::InputError);
+  CHECK_THROWS_AS(audit_given_forces(r, "short", {states[0]}, {r.reference[0]}), railsim::InputError);
+
+  // The verdict follows from the table: recompute it from the errors and costs.
+  for (const auto& run : {"chopaya", "fastrip", "polach", "reference"}) {
+    INFO(run);
+    const AuditVerdict v = audit_verdict(r, run);
+    const ModelAudit& rm = r.models[static_cast<std::size_t>(r.find(run))];
+    std::string cheapest, best;
+    double cheapest_cost = INFINITY, best_error = INFINITY;
+    std::vector<std::string> cheaper;
+    for (std::size_t m = 0; m < r.models.size(); ++m) {
+      double mx = 0.0;
+      for (double e : r.errors[m]) mx = std::max(mx, e);
+      const bool meets = mx <= o.tolerance;
+      CHECK(r.models[m].meets_tolerance == meets);
+      const double cost = std::isnan(r.models[m].median_cost_ns) ? INFINITY : r.models[m].median_cost_ns;
+      if (meets && (cheapest.empty() || cost < cheapest_cost)) cheapest = r.models[m].model, cheapest_cost = cost;
+      if (meets && r.models[m].model != run && r.models[m].median_cost_ns < rm.median_cost_ns)
+        cheaper.push_back(r.models[m].model);
+      if (mx < best_error) best_error = mx, best = r.models[m].model;
+    }
+    CHECK(v.run_meets == rm.meets_tolerance);
+    CHECK(v.cheapest_meeting == cheapest);
+    CHECK(cheapest_within(r, o.tolerance) == cheapest);
+    CHECK(v.most_accurate == best);
+    std::vector<std::string> got = v.cheaper_meeting;
+    std::sort(got.begin(), got.end());
+    std::sort(cheaper.begin(), cheaper.end());
+    CHECK(got == cheaper);
+  }
+  // The given reference (no cost measured) is the most accurate, never "cheaper"; FaStrip meets 12 % here,
+  // CHOPAYA does not (spin states of the set).
+  CHECK(audit_verdict(r, "chopaya").most_accurate == "reference");
+  CHECK_FALSE(audit_verdict(r, "chopaya").run_meets);
+  CHECK(audit_verdict(r, "fastrip").run_meets);
+  CHECK_THROWS_WITH(audit_verdict(r, "no_such_model"), Catch::Contains("no_such_model"));
+}
+
+TEST_CASE("contact audit: verdict edge cases on a hand-made table", "[contact][audit]") {
+  ContactAuditResult r;
+  r.tolerance = 0.02;
+  const auto entry = [](const char* name, double mx, double cost, bool meets) {
+    ModelAudit a;
+    a.model = name;
+    a.max_error = mx;
+    a.median_cost_ns = a.mean_cost_ns = cost;
+    a.meets_tolerance = meets;
+    return a;
+  };
+  r.models = {entry("slow_exact", 0.001, 5e6, true), entry("fast_ok", 0.015, 400, true),
+              entry("cheap_bad", 0.30, 80, false), entry("as_run", 0.019, std::nan(""), true),
+              entry("fast_ok_too", 0.015, 400, true)};
+  CHECK(r.meeting_tolerance() == std::vector<std::string>{"fast_ok", "fast_ok_too", "slow_exact", "as_run"});
+  AuditVerdict v = audit_verdict(r, "cheap_bad");
+  CHECK_FALSE(v.run_meets);
+  CHECK(v.cheapest_meeting == "fast_ok");
+  CHECK(v.cheaper_meeting.empty());  // nothing meeting it is cheaper than 80 ns
+  CHECK(v.most_accurate == "slow_exact");
+  v = audit_verdict(r, "slow_exact");
+  CHECK(v.run_meets);
+  CHECK(v.cheaper_meeting == std::vector<std::string>{"fast_ok", "fast_ok_too"});  // as_run: cost unknown
+  v = audit_verdict(r, "as_run");
+  CHECK(v.cheaper_meeting.empty());  // its own cost is unknown: nothing is known to be cheaper
+  CHECK(v.cheapest_meeting == "fast_ok");
+  r.models[0].meets_tolerance = r.models[1].meets_tolerance = r.models[3].meets_tolerance =
+      r.models[4].meets_tolerance = false;
+  CHECK(audit_verdict(r, "cheap_bad").cheapest_meeting.empty());
+  // Other tolerances read from the same table (max error and cost only).
+  CHECK(cheapest_within(r, 0.5) == "cheap_bad");
+  CHECK(cheapest_within(r, 0.016) == "fast_ok");
+  CHECK(cheapest_within(r, 0.005) == "slow_exact");
+  CHECK(cheapest_within(r, 0.0005).empty());
+  r.models[2].failed = 1;
+  CHECK(cheapest_within(r, 0.5) == "fast_ok");
+}

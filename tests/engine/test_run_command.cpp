@@ -118,3 +118,26 @@ TEST_CASE("railsim run: bad scenario exits 2, numerical failure exits 3", "[engi
   CHECK(failed["status"] == "failed");
   CHECK(failed["error"].get<std::string>().find("exceeds the admissible") != std::string::npos);
 }
+
+TEST_CASE("railsim run --contact-audit: bad counts and tolerances exit 2 naming the option", "[engine][cli][audit]") {
+  const std::string out = test::temp_dir("run_audit_bad");
+  const std::string base = "run " + test::source_path("scenarios/single_wheelset.yaml") + " --out " + out + " ";
+  for (const char* n : {"0", "-5", "10001"}) {
+    const auto r = test::run_railsim(base + "--contact-audit " + n);
+    INFO(r.output);
+    CHECK(r.exit_code == 2);
+    CHECK(r.output.find("--contact-audit") != std::string::npos);
+    CHECK(r.output.find("[1, 10000]") != std::string::npos);
+  }
+  for (const char* tol : {"0", "-1", "nan", "inf", "101"}) {
+    const auto r = test::run_railsim(base + "--contact-audit 5 --audit-tolerance " + tol);
+    INFO(r.output);
+    CHECK(r.exit_code == 2);
+    CHECK(r.output.find("--audit-tolerance") != std::string::npos);
+  }
+  // A run whose contact has no patch shape (prescribed creep coefficients): bad input, said so.
+  const auto r = test::run_railsim(base + "--contact-audit 5 --set duration=0.05");
+  INFO(r.output);
+  CHECK(r.exit_code == 2);
+  CHECK(r.output.find("patch") != std::string::npos);
+}
