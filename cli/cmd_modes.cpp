@@ -39,7 +39,7 @@ struct ModesArgs {
 };
 
 int run_modes(const ModesArgs& a) {
-  check_speed_range(a.v_min_kmh, a.v_max_kmh, a.v_step_kmh);
+  const int n = check_speed_range(a.v_min_kmh, a.v_max_kmh, a.v_step_kmh);
   const engine::Scenario sc = engine::load_scenario(a.scenario);
   std::error_code ec;
   std::filesystem::create_directories(a.out, ec);
@@ -60,7 +60,6 @@ int run_modes(const ModesArgs& a) {
     zeta[k] = {label, {}, {}, "markers", "", 0};
     freq[k] = {label, {}, {}, "markers", "", 0};
   }
-  const int n = static_cast<int>(std::floor((a.v_max_kmh - a.v_min_kmh) / a.v_step_kmh + 1e-9)) + 1;
   std::vector<double> speeds;
   for (int i = 0; i < n; ++i) speeds.push_back((a.v_min_kmh + i * a.v_step_kmh) / 3.6);
   const auto all = engine::modes_versus_speed(sc, speeds, a.count);
