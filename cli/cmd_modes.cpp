@@ -19,6 +19,7 @@
 #include "cli/commands.hpp"
 #include "cli/support_speed_range.hpp"
 #include "core/errors.hpp"
+#include "core/output_lock.hpp"
 #include "engine/analysis/critical_speed.hpp"
 #include "engine/analysis/mode_sweep.hpp"
 #include "engine/linearisation.hpp"
@@ -40,6 +41,7 @@ struct ModesArgs {
 
 int run_modes(const ModesArgs& a) {
   const int n = check_speed_range(a.v_min_kmh, a.v_max_kmh, a.v_step_kmh);
+  const OutputLock lock(a.out);  // one writer per output folder
   const engine::Scenario sc = engine::load_scenario(a.scenario);
   std::error_code ec;
   std::filesystem::create_directories(a.out, ec);
