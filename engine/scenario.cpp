@@ -229,7 +229,7 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
   if (auto mat = c.find("material")) {
     mat->allow_only({"E", "nu", "mu", "shear_modulus"});
     co.material.E = mat->has("E") ? mat->positive("E") : co.material.E;
-    co.material.nu = mat->has("nu") ? mat->in_range("nu", 0.0, 0.5, false, false) : co.material.nu;
+    co.material.nu = mat->has("nu") ? mat->in_range("nu", 0.0, 0.5, true, false) : co.material.nu;
     co.material.mu = mat->has("mu") ? mat->in_range("mu", 0.0, 2.0, true) : co.material.mu;
     if (co.material.mu > 1.0) {
       sc.warnings.push_back(mat->at("mu").where() + ": key 'contact.material.mu': " +

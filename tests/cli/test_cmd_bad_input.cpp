@@ -119,6 +119,9 @@ TEST_CASE("railsim on bad options: exit 2 naming the option and the range", "[cl
        {"--v-step 1e-12: 20..400 km/h would take", "speeds, more than the limit of 2000", "use a step of at least"}},
       {"--duration nan", "critical-speed " + sc + " --duration nan --out '" + dir + "/c'", {"--duration: "}},
       {"--out ''", "modes " + sc + " --out ''", {"--out: expected a file or folder name (got '')"}},
+      {"negative --grid", "contact '" + test::data_path("bad_input/contact_one_case.yaml") +
+                              "' --model mim --grid -5 --out '" + dir + "/g.csv'",
+       {"--grid: Value -5 not in range 0 to 4000"}},
       {"-o ''", "track '" + test::source_path("tracks/curve_R300.yaml") + "' -o ''", {"expected a file or folder name"}},
   });
 }

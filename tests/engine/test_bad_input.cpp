@@ -86,6 +86,7 @@ TEST_CASE("bad scenarios: refused naming file, line, key and the allowed range",
           {"scenario_output_interval_tiny.yaml",
            {":6: key 'output_interval'", "1000000000 output samples", "limit of 1000000"}},
           {"scenario_mu_zero.yaml", {":10: key 'contact.material.mu'", "expected a number in (0, 2]", "got 0"}},
+          {"scenario_nu_zero.yaml", {":10: key 'contact.material.nu'", "expected a number in (0, 0.5]", "got 0"}},
           // The error is in the file the scenario names: that file, line and key.
           {"vehicle_self_spring.yaml", {":6: key 'elements[0].other'", "to itself"}},
           {"table_negative_c11.dat", {":5: column 8 (C11 [-])", "expected a number in (0, 100]", "got -5"}},
