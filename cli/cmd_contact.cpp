@@ -82,10 +82,11 @@ void register_contact(CLI::App& app, CommandRunner& run) {
   cmd->add_option("--reduction", opts->reduction,
                   "Reduction of Kalker's coefficients (overrides the file): none, elastic_fe, "
                   "elastoplastic_fe, third_body, one number k, or k11,k22,k23");
-  cmd->add_option("--grid", opts->grid, "Discretisation of grid-based models (0 = model default)")
-      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--grid", opts->grid, "Discretisation of grid-based models (0 = model default; each model "
+                  "checks its own range, MIM also its memory)")
+      ->check(CLI::Range(0, 4000));
   cmd->add_option("--tolerance", opts->tolerance, "Solver tolerance of iterative models (0 = model default)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::Range(0.0, 0.1));
   cmd->add_option("--cache-dir", opts->cache_dir,
                   "Table cache folder of cached-table models (mim_table; default $RAILSIM_CACHE_DIR, "
                   "$XDG_CACHE_HOME/railsim or ~/.cache/railsim)");

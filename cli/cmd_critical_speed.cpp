@@ -25,6 +25,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 
 #include "cli/commands.hpp"
@@ -32,6 +33,7 @@
 #include "contact/reduction.hpp"
 #include "contact/registry.hpp"
 #include "core/errors.hpp"
+#include "core/output_lock.hpp"
 #include "engine/analysis/bifurcation_chart.hpp"
 #include "engine/analysis/critical_speed.hpp"
 #include "engine/analysis/reduction_study.hpp"
@@ -355,6 +357,9 @@ int run_reduction_study(const engine::Scenario& base, const CriticalSpeedArgs& a
 
 int run_critical_speed(const CriticalSpeedArgs& args) {
   const engine::MpiContext mpi = engine::mpi_context();
+  // One job per output folder (the ranks of one MPI job share it: rank 0 holds the lock).
+  std::optional<OutputLock> lock;
+  if (mpi.rank == 0) lock.emplace(args.out);
   engine::Scenario base = engine::load_scenario(args.scenario);
   const CriticalSpeedArgs a = resolve_settings(args, base.critical_speed);
   check_speed_range(a.v_min_kmh, a.v_max_kmh, a.v_step_kmh);

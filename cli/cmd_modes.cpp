@@ -19,6 +19,7 @@
 #include "cli/commands.hpp"
 #include "cli/support_speed_range.hpp"
 #include "core/errors.hpp"
+#include "core/output_lock.hpp"
 #include "engine/analysis/critical_speed.hpp"
 #include "engine/analysis/mode_sweep.hpp"
 #include "engine/linearisation.hpp"
@@ -39,7 +40,8 @@ struct ModesArgs {
 };
 
 int run_modes(const ModesArgs& a) {
-  check_speed_range(a.v_min_kmh, a.v_max_kmh, a.v_step_kmh);
+  const int n = check_speed_range(a.v_min_kmh, a.v_max_kmh, a.v_step_kmh);
+  const OutputLock lock(a.out);  // one writer per output folder
   const engine::Scenario sc = engine::load_scenario(a.scenario);
   std::error_code ec;
   std::filesystem::create_directories(a.out, ec);
@@ -60,7 +62,6 @@ int run_modes(const ModesArgs& a) {
     zeta[k] = {label, {}, {}, "markers", "", 0};
     freq[k] = {label, {}, {}, "markers", "", 0};
   }
-  const int n = static_cast<int>(std::floor((a.v_max_kmh - a.v_min_kmh) / a.v_step_kmh + 1e-9)) + 1;
   std::vector<double> speeds;
   for (int i = 0; i < n; ++i) speeds.push_back((a.v_min_kmh + i * a.v_step_kmh) / 3.6);
   const auto all = engine::modes_versus_speed(sc, speeds, a.count);

@@ -14,6 +14,7 @@
 #include "cli/commands.hpp"
 #include "cli/support_scenario_overrides.hpp"
 #include "core/errors.hpp"
+#include "core/output_lock.hpp"
 #include "engine/analysis/scenario_run.hpp"
 #include "engine/scenario.hpp"
 
@@ -42,6 +43,7 @@ int run_scenario(const RunArgs& a) {
   std::vector<ScenarioOverride> overrides;
   for (const auto& s : a.sets) overrides.push_back(parse_set_option(s));
   if (a.speed_kmh > 0.0) overrides.push_back(speed_kmh_override(a.speed_kmh));
+  const OutputLock lock(a.out);  // one writer per output folder
   const LoadedScenario loaded = load_scenario_with_overrides(a.scenario, overrides);
   engine::ScenarioRunOptions o;
   o.out_dir = a.out;

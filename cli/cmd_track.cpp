@@ -39,6 +39,8 @@ int run_track(const TrackOptions& o) {
   const double s1 = o.to.value_or(track.length());
   if (!(o.step > 0.0) || !std::isfinite(o.step))
     throw InputError("--step: expected a positive number (got " + format_number(o.step) + ")");
+  if (o.speed_kmh && !(*o.speed_kmh > 0.0 && *o.speed_kmh <= 720.0))
+    throw InputError("--speed-kmh: expected a speed in (0, 720] km/h (got " + format_number(*o.speed_kmh) + ")");
   if (!(s1 > s0)) throw InputError("--from/--to: need from < to (got " + format_number(s0) + ", " + format_number(s1) + ")");
   const double count = std::floor((s1 - s0) / o.step + 1e-9) + 1.0;
   if (count > 2e7) throw InputError("--step " + format_number(o.step) + " gives " + format_number(count) +

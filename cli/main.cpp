@@ -2,6 +2,7 @@
 // (spdlog, to stderr), runs one subcommand and maps failures to exit codes:
 // 0 success, 2 bad input, 3 numerical failure. `railsim --version` prints
 // "railsim X.Y.Z" (as help2man expects); `railsim version` says more.
+// Every numeric option is refused unless finite (cli/support_option_checks.hpp).
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
@@ -9,6 +10,7 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "cli/support_option_checks.hpp"
 #include "core/errors.hpp"
 #include "core/version.hpp"
 
@@ -34,6 +36,13 @@ int main(int argc, char** argv) {
   railsim::cli::register_track(app, run);
   railsim::cli::register_wheelset_contact(app, run);
   railsim::cli::register_compare_yq(app, run);
+
+  railsim::cli::add_common_checks(app);
+  if (const std::string bad = railsim::cli::unknown_subcommand(app, argc, argv); !bad.empty()) {
+    std::cerr << "railsim: unknown subcommand '" << bad << "' (known: " << railsim::cli::subcommand_names(app)
+              << "; see railsim --help)\n";
+    return railsim::kExitBadInput;
+  }
 
   try {
     app.parse(argc, argv);

@@ -1,6 +1,8 @@
 // Contact case files, timed model calls and result rows; see support_contact_cases.hpp.
 #include "cli/support_contact_cases.hpp"
 
+#include <spdlog/spdlog.h>
+
 #include <algorithm>
 #include <chrono>
 #include <set>
@@ -61,7 +63,14 @@ ContactCaseSet read_contact_cases(const config::InputNode& root) {
   m.allow_only({"E", "nu", "mu"});
   set.material.E = m.positive("E");
   set.material.nu = m.in_range("nu", 0.0, 0.5, true, false);
-  set.material.mu = m.positive("mu");
+  // mu > 2 is beyond any dry contact of metals; above 1 it is legal but implausible for wheel on rail.
+  set.material.mu = m.in_range("mu", 0.0, 2.0, true);
+  if (set.material.mu > 1.0) {
+    set.warnings.push_back(m.at("mu").where() + ": key 'material.mu': " + config::format_number(set.material.mu) +
+                           " is legal but implausible for wheel on rail (usual range 0.05-0.6; above 1 is beyond "
+                           "measured wheel-rail friction)");
+    spdlog::warn("{}", set.warnings.back());
+  }
   if (const auto r = root.find("reduction")) set.reduction = read_reduction(*r);
   const auto cases = root.at("cases");
   if (!cases.is_sequence() || cases.elements().empty()) cases.fail("expected a non-empty list of cases");

@@ -36,6 +36,9 @@ struct ContactCaseSet {
   contact::Material material;
   contact::ReductionFactors reduction;  // from the file, or none
   std::vector<ContactCase> cases;
+  // Legal but implausible inputs (mu above 1), "file:line: key 'k': value ...
+  // (usual range ...)"; also logged as warnings when read.
+  std::vector<std::string> warnings;
 };
 
 // Read a case set from a parsed YAML document (the root mapping).

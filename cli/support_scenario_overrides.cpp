@@ -142,7 +142,9 @@ void rethrow_for_overrides(const InputError& e, const std::vector<ScenarioOverri
 
 LoadedScenario load_scenario_with_overrides(const std::string& path, const std::vector<ScenarioOverride>& overrides) {
   const config::InputNode original = config::InputNode::load_file(path);
-  YAML::Node root = YAML::Clone(original.raw());
+  // The overrides edit the parsed tree in place (no YAML::Clone: a clone loses
+  // the nodes' file positions, and every message would say line 1).
+  YAML::Node root = original.raw();
   for (const auto& o : overrides) apply(root, o);
   config::InputNode node(root, path, "");
   try {

@@ -3,8 +3,12 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <sstream>
+#include <map>
+#include <vector>
+
+#include <yaml-cpp/depthguard.h>
+
+#include "core/input_file.hpp"
 
 namespace railsim::config {
 
@@ -14,6 +18,40 @@ int mark_line(const YAML::Node& n) {
   if (!n.IsDefined()) return 0;
   const YAML::Mark m = n.Mark();
   return m.line >= 0 ? m.line + 1 : 0;
+}
+
+// Largest number of nodes walked by the duplicate-key check (aliases can make
+// a small file a huge tree: "billion laughs").
+constexpr std::size_t kMaxNodes = 2000000;
+
+// A key given twice in one mapping is an error: yaml-cpp keeps both pairs and
+// lookups find the first one, silently ignoring the second.
+void refuse_duplicate_keys(const YAML::Node& root, const std::string& name) {
+  std::vector<std::pair<YAML::Node, std::string>> todo{{root, ""}};
+  std::size_t seen = 0;
+  while (!todo.empty()) {
+    auto [n, path] = todo.back();
+    todo.pop_back();
+    if (++seen > kMaxNodes)
+      throw InputError(name + ": more than " + std::to_string(kMaxNodes) +
+                       " YAML nodes (aliases expanding without bound?)");
+    if (n.IsSequence()) {
+      for (std::size_t i = 0; i < n.size(); ++i) todo.emplace_back(n[i], path + "[" + std::to_string(i) + "]");
+    } else if (n.IsMap()) {
+      std::map<std::string, int> lines;
+      for (const auto& kv : n) {
+        const std::string k = kv.first.IsScalar() ? kv.first.Scalar() : std::string("(complex key)");
+        const int line = mark_line(kv.first);
+        const std::string key = path.empty() ? k : path + "." + k;
+        const auto [it, fresh] = lines.emplace(k, line);
+        if (!fresh)
+          throw InputError(name + ":" + std::to_string(line) + ": key '" + quote_input(key) +
+                           "': given twice (first on line " + std::to_string(it->second) +
+                           "); give each key once");
+        todo.emplace_back(kv.second, key);
+      }
+    }
+  }
 }
 
 }  // namespace
@@ -28,11 +66,7 @@ InputNode::InputNode(YAML::Node node, std::string file, std::string path)
     : node_(std::move(node)), file_(std::move(file)), path_(std::move(path)) {}
 
 InputNode InputNode::load_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open file for reading");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return load_string(ss.str(), path);
+  return load_string(read_input_file(path, "YAML input"), path);
 }
 
 InputNode InputNode::load_string(const std::string& text, const std::string& name) {
@@ -40,9 +74,13 @@ InputNode InputNode::load_string(const std::string& text, const std::string& nam
     YAML::Node root = YAML::Load(text);
     if (!root.IsDefined() || root.IsNull())
       throw InputError(name + ":1: the file is empty (expected a YAML mapping)");
+    refuse_duplicate_keys(root, name);
     return InputNode(root, name, "");
+  } catch (const YAML::DeepRecursion& e) {
+    throw InputError(name + ":" + std::to_string(e.mark.line + 1) +
+                     ": YAML nested too deeply (" + std::to_string(e.depth()) + " levels; yaml-cpp accepts fewer)");
   } catch (const YAML::Exception& e) {
-    throw InputError(name + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax error: " + e.msg);
+    throw InputError(name + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax error: " + quote_input(e.msg));
   }
 }
 
@@ -61,7 +99,7 @@ void InputNode::fail(std::string_view what) const {
 }
 
 std::string InputNode::text() const {
-  if (node_.IsScalar()) return node_.Scalar();
+  if (node_.IsScalar()) return quote_input(node_.Scalar());
   if (node_.IsSequence()) return "a list";
   if (node_.IsMap()) return "a mapping";
   return "nothing";
@@ -117,13 +155,13 @@ std::vector<std::string> InputNode::keys() const {
 void InputNode::allow_only(const std::vector<std::string>& allowed) const {
   if (!node_.IsMap()) fail("expected a mapping (got " + text() + ")");
   for (const auto& kv : node_) {
-    const std::string k = kv.first.as<std::string>();
+    const std::string k = kv.first.IsScalar() ? kv.first.Scalar() : std::string("(complex key)");
     bool ok = false;
     for (const auto& a : allowed) ok = ok || (a == k);
     if (!ok) {
       std::string list;
       for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
-      InputNode bad(kv.second, file_, child_path(k));
+      InputNode bad(kv.second, file_, child_path(quote_input(k)));
       bad.parent_line_ = mark_line(kv.first);
       if (bad.line() == 0) bad.parent_line_ = line();
       bad.fail("unknown key (allowed here: " + list + ")");
@@ -149,7 +187,7 @@ double InputNode::as_number() const {
   }
   // YAML spellings of NaN and infinity are refused too: inputs must be finite.
   if (used == 0 || used != s.size() || !std::isfinite(v))
-    fail("expected a finite number (got '" + s + "')");
+    fail("expected a finite number (got '" + quote_input(s) + "')");
   return v;
 }
 

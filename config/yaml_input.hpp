@@ -6,7 +6,8 @@
 //
 //   cases.yaml:12: key 'cases[2].Fz': expected a positive number (got -3)
 //
-// Unknown keys are errors (allow_only), never silently ignored. Numbers must be
+// Unknown keys are errors (allow_only), never silently ignored; a key given
+// twice in one mapping is an error naming both lines. Numbers must be
 // finite. All failures throw railsim::InputError.
 #pragma once
 

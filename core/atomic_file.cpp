@@ -3,6 +3,7 @@
 
 #include <unistd.h>
 
+#include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <thread>
@@ -12,8 +13,12 @@
 namespace railsim {
 
 std::string temporary_path_for(const std::string& path) {
+  // pid and thread keep processes and threads apart; the counter keeps two
+  // writes of one thread apart (a write nested in another's callback).
+  static std::atomic<unsigned long> counter{0};
   return path + ".tmp." + std::to_string(static_cast<long>(::getpid())) + "." +
-         std::to_string(std::hash<std::thread::id>{}(std::this_thread::get_id()));
+         std::to_string(std::hash<std::thread::id>{}(std::this_thread::get_id())) + "." +
+         std::to_string(counter.fetch_add(1, std::memory_order_relaxed));
 }
 
 void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write) {

@@ -1,5 +1,6 @@
 // Writing a file so that readers never see it half written: the content goes
-// to a temporary file beside the target, "<path>.tmp.<pid>.<thread>", which
+// to a temporary file beside the target, "<path>.tmp.<pid>.<thread>.<n>" (n a
+// per-process counter: every call gets a fresh name), which
 // is then renamed over the target (rename(2) replaces it atomically on one
 // file system). Two processes or threads writing the same file each use their
 // own temporary; the last rename wins and the file is always complete.
@@ -14,7 +15,7 @@
 
 namespace railsim {
 
-// The temporary file name used for `path` by this process and thread.
+// A fresh temporary file name for `path`, unique to this process, thread and call.
 std::string temporary_path_for(const std::string& path);
 
 // Write `content` to `path` atomically (binary, exactly these bytes).

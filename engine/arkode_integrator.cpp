@@ -6,6 +6,7 @@
 #include <arkode/arkode_erkstep.h>
 
 #include <memory>
+#include <string>
 
 #include "core/errors.hpp"
 #include "engine/integrator.hpp"
@@ -24,17 +25,25 @@ class ArkodeErk final : public Integrator {
     c_.load(x0);
     t_ = t0;
     mem_ = ERKStepCreate(&SundialsCommon::rhs_cb, t0, c_.y, c_.ctx);
-    ERKStepSetUserData(mem_, &c_);
-    ERKStepSetErrHandlerFn(mem_, &SundialsCommon::err_cb, &c_);
-    ERKStepSetTableNum(mem_, ARKODE_DORMAND_PRINCE_7_4_5);
-    ERKStepSVtolerances(mem_, c_.opt.rtol, c_.abs_tolerances());
-    if (c_.opt.max_step > 0) ERKStepSetMaxStep(mem_, c_.opt.max_step);
-    if (c_.opt.initial_step > 0) ERKStepSetInitStep(mem_, c_.opt.initial_step);
-    ERKStepSetMinStep(mem_, c_.opt.min_step);
-    ERKStepSetMaxNumSteps(mem_, c_.opt.max_steps);
+    SundialsCommon::check_created(mem_, "ERKStepCreate");
+    const auto check = [this](int flag, const char* call, const std::string& setting = "") {
+      c_.check_setup(flag, call, setting, &ERKStepGetReturnFlagName);
+    };
+    const auto num = [](const char* key, double v) { return std::string(key) + " " + std::to_string(v); };
+    check(ERKStepSetUserData(mem_, &c_), "ERKStepSetUserData");
+    check(ERKStepSetErrHandlerFn(mem_, &SundialsCommon::err_cb, &c_), "ERKStepSetErrHandlerFn");
+    check(ERKStepSetTableNum(mem_, ARKODE_DORMAND_PRINCE_7_4_5), "ERKStepSetTableNum");
+    check(ERKStepSVtolerances(mem_, c_.opt.rtol, c_.abs_tolerances()), "ERKStepSVtolerances", num("rtol", c_.opt.rtol));
+    if (c_.opt.max_step > 0)
+      check(ERKStepSetMaxStep(mem_, c_.opt.max_step), "ERKStepSetMaxStep", num("max_step", c_.opt.max_step));
+    if (c_.opt.initial_step > 0)
+      check(ERKStepSetInitStep(mem_, c_.opt.initial_step), "ERKStepSetInitStep", num("initial_step", c_.opt.initial_step));
+    check(ERKStepSetMinStep(mem_, c_.opt.min_step), "ERKStepSetMinStep", num("min_step", c_.opt.min_step));
+    check(ERKStepSetMaxNumSteps(mem_, c_.opt.max_steps), "ERKStepSetMaxNumSteps",
+          "max_steps " + std::to_string(c_.opt.max_steps));
   }
   void advance(double t_out, Eigen::VectorXd& x) override {
-    ERKStepSetStopTime(mem_, t_out);
+    c_.check_setup(ERKStepSetStopTime(mem_, t_out), "ERKStepSetStopTime", "", &ERKStepGetReturnFlagName);
     const int flag = ERKStepEvolve(mem_, t_out, c_.y, &t_, ARK_NORMAL);
     if (flag < 0) {
       const std::string what = SundialsCommon::take_flag_name(ERKStepGetReturnFlagName(flag));
@@ -72,19 +81,29 @@ class ArkodeDirk final : public Integrator {
     c_.load(x0);
     t_ = t0;
     mem_ = ARKStepCreate(nullptr, &SundialsCommon::rhs_cb, t0, c_.y, c_.ctx);
-    ARKStepSetUserData(mem_, &c_);
-    ARKStepSetErrHandlerFn(mem_, &SundialsCommon::err_cb, &c_);
-    ARKStepSVtolerances(mem_, c_.opt.rtol, c_.abs_tolerances());
-    if (c_.opt.max_step > 0) ARKStepSetMaxStep(mem_, c_.opt.max_step);
-    if (c_.opt.initial_step > 0) ARKStepSetInitStep(mem_, c_.opt.initial_step);
-    ARKStepSetMinStep(mem_, c_.opt.min_step);
-    ARKStepSetMaxNumSteps(mem_, c_.opt.max_steps);
+    SundialsCommon::check_created(mem_, "ARKStepCreate");
+    const auto check = [this](int flag, const char* call, const std::string& setting = "") {
+      c_.check_setup(flag, call, setting, &ARKStepGetReturnFlagName);
+    };
+    const auto num = [](const char* key, double v) { return std::string(key) + " " + std::to_string(v); };
+    check(ARKStepSetUserData(mem_, &c_), "ARKStepSetUserData");
+    check(ARKStepSetErrHandlerFn(mem_, &SundialsCommon::err_cb, &c_), "ARKStepSetErrHandlerFn");
+    check(ARKStepSVtolerances(mem_, c_.opt.rtol, c_.abs_tolerances()), "ARKStepSVtolerances", num("rtol", c_.opt.rtol));
+    if (c_.opt.max_step > 0)
+      check(ARKStepSetMaxStep(mem_, c_.opt.max_step), "ARKStepSetMaxStep", num("max_step", c_.opt.max_step));
+    if (c_.opt.initial_step > 0)
+      check(ARKStepSetInitStep(mem_, c_.opt.initial_step), "ARKStepSetInitStep", num("initial_step", c_.opt.initial_step));
+    check(ARKStepSetMinStep(mem_, c_.opt.min_step), "ARKStepSetMinStep", num("min_step", c_.opt.min_step));
+    check(ARKStepSetMaxNumSteps(mem_, c_.opt.max_steps), "ARKStepSetMaxNumSteps",
+          "max_steps " + std::to_string(c_.opt.max_steps));
     c_.make_linear_solver(x0, t0);
-    ARKStepSetLinearSolver(mem_, c_.LS, c_.A);
-    if (c_.opt.jacobian == "assembled" || c_.opt.linear_solver == "klu") ARKStepSetJacFn(mem_, &SundialsCommon::jac_cb);
+    c_.check_setup(ARKStepSetLinearSolver(mem_, c_.LS, c_.A), "ARKStepSetLinearSolver", c_.opt.linear_solver,
+                   &ARKStepGetLinReturnFlagName);
+    if (c_.opt.jacobian == "assembled" || c_.opt.linear_solver == "klu")
+      c_.check_setup(ARKStepSetJacFn(mem_, &SundialsCommon::jac_cb), "ARKStepSetJacFn", "", &ARKStepGetLinReturnFlagName);
   }
   void advance(double t_out, Eigen::VectorXd& x) override {
-    ARKStepSetStopTime(mem_, t_out);
+    c_.check_setup(ARKStepSetStopTime(mem_, t_out), "ARKStepSetStopTime", "", &ARKStepGetReturnFlagName);
     const int flag = ARKStepEvolve(mem_, t_out, c_.y, &t_, ARK_NORMAL);
     if (flag < 0) {
       const std::string what = SundialsCommon::take_flag_name(ARKStepGetReturnFlagName(flag));

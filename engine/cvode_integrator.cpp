@@ -6,6 +6,7 @@
 #include <cvode/cvode_ls.h>
 
 #include <memory>
+#include <string>
 
 #include "core/errors.hpp"
 #include "engine/integrator.hpp"
@@ -24,19 +25,30 @@ class CvodeIntegrator final : public Integrator {
     c_.load(x0);
     t_ = t0;
     mem_ = CVodeCreate(CV_BDF, c_.ctx);
-    CVodeInit(mem_, &SundialsCommon::rhs_cb, t0, c_.y);
-    CVodeSetUserData(mem_, &c_);
-    CVodeSetErrHandlerFn(mem_, &SundialsCommon::err_cb, &c_);
-    CVodeSVtolerances(mem_, c_.opt.rtol, c_.abs_tolerances());
-    if (c_.opt.max_step > 0) CVodeSetMaxStep(mem_, c_.opt.max_step);
-    if (c_.opt.initial_step > 0) CVodeSetInitStep(mem_, c_.opt.initial_step);
-    CVodeSetMinStep(mem_, c_.opt.min_step);
-    CVodeSetMaxNumSteps(mem_, c_.opt.max_steps);
-    if (c_.opt.max_order > 0) CVodeSetMaxOrd(mem_, c_.opt.max_order);
-    if (c_.opt.stability_limit_detection) CVodeSetStabLimDet(mem_, SUNTRUE);
+    SundialsCommon::check_created(mem_, "CVodeCreate");
+    // Every set-up call is checked: a refused setting (min_step above
+    // max_step, say) would otherwise be ignored silently.
+    const auto check = [this](int flag, const char* call, const std::string& setting = "") {
+      c_.check_setup(flag, call, setting, &CVodeGetReturnFlagName);
+    };
+    const auto num = [](const char* key, double v) { return std::string(key) + " " + std::to_string(v); };
+    check(CVodeInit(mem_, &SundialsCommon::rhs_cb, t0, c_.y), "CVodeInit");
+    check(CVodeSetUserData(mem_, &c_), "CVodeSetUserData");
+    check(CVodeSetErrHandlerFn(mem_, &SundialsCommon::err_cb, &c_), "CVodeSetErrHandlerFn");
+    check(CVodeSVtolerances(mem_, c_.opt.rtol, c_.abs_tolerances()), "CVodeSVtolerances", num("rtol", c_.opt.rtol));
+    if (c_.opt.max_step > 0) check(CVodeSetMaxStep(mem_, c_.opt.max_step), "CVodeSetMaxStep", num("max_step", c_.opt.max_step));
+    if (c_.opt.initial_step > 0)
+      check(CVodeSetInitStep(mem_, c_.opt.initial_step), "CVodeSetInitStep", num("initial_step", c_.opt.initial_step));
+    check(CVodeSetMinStep(mem_, c_.opt.min_step), "CVodeSetMinStep", num("min_step", c_.opt.min_step));
+    check(CVodeSetMaxNumSteps(mem_, c_.opt.max_steps), "CVodeSetMaxNumSteps", "max_steps " + std::to_string(c_.opt.max_steps));
+    if (c_.opt.max_order > 0)
+      check(CVodeSetMaxOrd(mem_, c_.opt.max_order), "CVodeSetMaxOrd", "max_order " + std::to_string(c_.opt.max_order));
+    if (c_.opt.stability_limit_detection) check(CVodeSetStabLimDet(mem_, SUNTRUE), "CVodeSetStabLimDet");
     c_.make_linear_solver(x0, t0);
-    CVodeSetLinearSolver(mem_, c_.LS, c_.A);
-    if (c_.opt.jacobian == "assembled" || c_.opt.linear_solver == "klu") CVodeSetJacFn(mem_, &SundialsCommon::jac_cb);
+    c_.check_setup(CVodeSetLinearSolver(mem_, c_.LS, c_.A), "CVodeSetLinearSolver", c_.opt.linear_solver,
+                   &CVodeGetLinReturnFlagName);
+    if (c_.opt.jacobian == "assembled" || c_.opt.linear_solver == "klu")
+      c_.check_setup(CVodeSetJacFn(mem_, &SundialsCommon::jac_cb), "CVodeSetJacFn", "", &CVodeGetLinReturnFlagName);
   }
   void advance(double t_out, Eigen::VectorXd& x) override {
     const int flag = CVode(mem_, t_out, c_.y, &t_, CV_NORMAL);

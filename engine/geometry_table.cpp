@@ -8,11 +8,52 @@
 #include <sstream>
 
 #include "core/errors.hpp"
+#include "core/input_file.hpp"
 
 namespace railsim::engine {
 
+namespace {
+
+// The 12 read columns, as the file format names them (geometry_table.hpp).
+const char* const kColumnNames[12] = {"shift",      "N0",  "delta", "a",   "b",   "a_w",
+                                      "r_w", "C11", "C22",   "C23", "z_c", "q0"};
+
+// Physical ranges of one row: a wrong unit or sign would otherwise load and
+// give valid-looking forces (a negative C11 turns creep forces around).
+void check_row(const std::string& path, int lineno, const double* v) {
+  struct Range {
+    int col;
+    double lo, hi;
+    bool lo_open;
+    const char* unit;
+  };
+  static const Range ranges[] = {
+      {0, -0.1, 0.1, false, "m"},        // shift
+      {1, 0.0, 1e7, true, "N"},          // reference normal force
+      {2, -1.5, 1.5, false, "rad"},      // contact angle
+      {3, 0.0, 0.1, true, "m"},          // semi-axis a
+      {4, 0.0, 0.1, true, "m"},          // semi-axis b
+      {5, 0.0, 1.5, true, "m"},          // lateral position of the contact point
+      {6, 0.1, 1.5, false, "m"},         // rolling radius
+      {7, 0.0, 100.0, true, "-"},        // Kalker C11
+      {8, 0.0, 100.0, true, "-"},        // Kalker C22
+      {9, 0.0, 100.0, false, "-"},       // Kalker C23
+  };
+  for (const Range& r : ranges) {
+    const double x = v[r.col];
+    if ((r.lo_open ? x > r.lo : x >= r.lo) && x <= r.hi) continue;
+    char buf[256];
+    std::snprintf(buf, sizeof buf, ": column %d (%s [%s]): expected a number in %s%g, %g] (got %g)", r.col + 1,
+                  kColumnNames[r.col], r.unit, r.lo_open ? "(" : "[", r.lo, r.hi, x);
+    throw InputError(path + ":" + std::to_string(lineno) + buf);
+  }
+}
+
+}  // namespace
+
 GeometryTable::GeometryTable(const std::string& path, const GeometryTableOptions& options)
     : path_(path), options_(options) {
+  check_input_file(path, "contact-geometry table");
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open contact-geometry table");
   std::string line;
@@ -72,9 +113,12 @@ GeometryTable::GeometryTable(const std::string& path, const GeometryTableOptions
     if (n != 13 || (ss >> rest))
       throw InputError(path + ":" + std::to_string(lineno) + ": expected 13 numbers per row");
     for (int k = 0; k < 12; ++k) {
-      if (!std::isfinite(v[k])) throw InputError(path + ":" + std::to_string(lineno) + ": non-finite number");
+      if (!std::isfinite(v[k]))
+        throw InputError(path + ":" + std::to_string(lineno) + ": column " + std::to_string(k + 1) + " (" +
+                         kColumnNames[k] + "): expected a finite number");
       cols[std::size_t(k)].push_back(v[k]);
     }
+    check_row(path, lineno, v);
   }
   finish_block();
   if (blocks_.empty()) throw InputError(path + ": no table rows");

@@ -183,12 +183,33 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
   // Speed.
   if (root.has("speed") == root.has("speed_kmh")) root.fail("give exactly one of 'speed' [m/s] or 'speed_kmh'");
   m.speed.v0 = root.has("speed") ? root.in_range("speed", 0.0, 200.0, true) : root.in_range("speed_kmh", 0.0, 720.0, true) / 3.6;
-  m.speed.accel = root.number_or("acceleration", 0.0);
-  m.speed.s0 = root.number_or("start_distance", 0.0);
+  m.speed.accel = root.has("acceleration") ? root.in_range("acceleration", -kMaxAcceleration, kMaxAcceleration) : 0.0;
+  if (root.has("start_distance")) {
+    // Outside [0, length] the track is an extrapolation of its end (no
+    // irregularities): a run there would not be a run on the track given.
+    const double len = track->length();
+    const InputNode sd = root.at("start_distance");
+    const double s0 = sd.as_number();
+    if (!(s0 >= 0.0 && s0 <= len))
+      sd.fail("expected a number in [0, " + config::format_number(len) + "] (the track's defined length [m]; got " +
+              config::format_number(s0) + ")");
+    m.speed.s0 = s0;
+  }
   sc.duration = root.positive("duration");
   if (m.speed.accel < 0 && m.speed.speed(sc.duration) <= 0)
     root.at("acceleration").fail("the speed would reach zero before the end of the run");
   sc.output_interval = root.has("output_interval") ? root.in_range("output_interval", 0.0, sc.duration, true) : 0.01;
+  {
+    // Bounded output: the run keeps every sample in memory (RunHistory) and writes it (channels.csv).
+    const double samples = std::floor(sc.duration / sc.output_interval) + 1.0;
+    if (samples > kMaxOutputSamples) {
+      const InputNode where = root.has("output_interval") ? root.at("output_interval") : root.at("duration");
+      where.fail("duration " + config::format_number(sc.duration) + " s / output_interval " +
+                 config::format_number(sc.output_interval) + " s gives " + config::format_number(samples) +
+                 " output samples, more than the limit of " + config::format_number(kMaxOutputSamples) +
+                 "; use a larger output_interval or a shorter duration");
+    }
+  }
   const std::string wm = root.string_or("wheelset_model", "lateral");
   if (wm == "lateral") m.wheelset_model = WheelsetModel::lateral;
   else if (wm == "full") m.wheelset_model = WheelsetModel::full;
@@ -208,8 +229,15 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
   if (auto mat = c.find("material")) {
     mat->allow_only({"E", "nu", "mu", "shear_modulus"});
     co.material.E = mat->has("E") ? mat->positive("E") : co.material.E;
-    co.material.nu = mat->has("nu") ? mat->in_range("nu", 0.0, 0.5, false, false) : co.material.nu;
+    co.material.nu = mat->has("nu") ? mat->in_range("nu", 0.0, 0.5, true, false) : co.material.nu;
     co.material.mu = mat->has("mu") ? mat->in_range("mu", 0.0, 2.0, true) : co.material.mu;
+    if (co.material.mu > 1.0) {
+      sc.warnings.push_back(mat->at("mu").where() + ": key 'contact.material.mu': " +
+                            config::format_number(co.material.mu) +
+                            " is legal but implausible for wheel on rail (usual range 0.05-0.6; above 1 is beyond "
+                            "measured wheel-rail friction)");
+      spdlog::warn("{}", sc.warnings.back());
+    }
     co.shear_modulus = mat->has("shear_modulus") ? mat->positive("shear_modulus") : 0.0;
   }
   auto geo = load_geometry(c.at("geometry"), base, co.material);
@@ -265,9 +293,29 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
     o.method = in->string_or("method", o.method);
     if (in->has("rtol")) o.rtol = in->in_range("rtol", 0.0, 0.1, true);
     if (in->has("atol")) o.atol = in->in_range("atol", 0.0, 0.1, true);
-    if (in->has("max_step")) o.max_step = in->non_negative("max_step");
-    if (in->has("initial_step")) o.initial_step = in->non_negative("initial_step");
-    if (in->has("min_step")) o.min_step = in->non_negative("min_step");
+    if (auto ms = in->find("max_step")) {
+      // 0 would be read by the integrators as "no limit": refused, the key is omitted for that.
+      const double v = ms->as_number();
+      if (!(v > 0.0 && v <= sc.duration))
+        ms->fail("expected a step in (0, " + config::format_number(sc.duration) + "] s (the duration; got " +
+                 config::format_number(v) + "); omit max_step to leave the step unlimited");
+      o.max_step = v;
+    }
+    if (auto is = in->find("initial_step")) {
+      const double v = is->as_number();
+      if (!(v >= 0.0 && v <= sc.duration))
+        is->fail("expected a step in [0, " + config::format_number(sc.duration) +
+                 "] s (0: the integrator's choice; at most the duration; got " + config::format_number(v) + ")");
+      o.initial_step = v;
+    }
+    if (auto ms = in->find("min_step")) {
+      const double v = ms->as_number();
+      const double hi = o.max_step > 0.0 ? std::min(o.max_step, sc.output_interval) : sc.output_interval;
+      if (!(v >= 0.0 && v < hi))
+        ms->fail("expected a step in [0, " + config::format_number(hi) + ") s (below the output interval" +
+                 std::string(o.max_step > 0.0 ? " and max_step" : "") + "; got " + config::format_number(v) + ")");
+      o.min_step = v;
+    }
     if (in->has("max_steps")) o.max_steps = static_cast<long>(in->in_range("max_steps", 1, 1e9));
     if (in->has("max_order")) o.max_order = static_cast<int>(in->in_range("max_order", 1, 5));
     if (in->has("atol_contact_modes")) o.atol_contact_modes = in->in_range("atol_contact_modes", 0.0, 1.0);

@@ -27,6 +27,10 @@
 //     static_approach: 7e-5             # full model, conical wheels: Hertz approach at the static load [m]
 //   integrator: {method: cvode_bdf, rtol: 1e-6, atol: 1e-8, max_step: 0.001, jacobian: fd,
 //                linear_solver: dense, max_steps: 100000, min_step: 1e-12}
+//                # max_step in (0, duration] (omit it for no limit); min_step below the output
+//                # interval and max_step
+//   start_distance must lie on the track ([0, length]); |acceleration| <= 10 m/s^2;
+//   at most kMaxOutputSamples output samples; a key given twice is an error.
 //   start: equilibrium | nominal        # (quasi-)static state at t = 0 (default) or x = 0
 //   initial: {ws1.lateral: 0.001}       # state name: value (deviations from the start state)
 //   critical_speed:                     # optional: analysis settings that suit this vehicle
@@ -40,6 +44,7 @@
 #include <Eigen/Core>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "config/yaml_input.hpp"
 #include "contact/geometry/wheel_rail_geometry.hpp"
@@ -63,9 +68,19 @@ struct CriticalSpeedSettings {
   double deceleration = 0.5;           // [m/s^2]
 };
 
+// Limits of a scenario (README "Exit codes and limits"): output samples of a
+// run (duration / output_interval + 1; every sample is kept in memory, about
+// 2 kB each for the four-wheelset coach, and written to channels.csv) and
+// the size of `acceleration` [m/s^2] (a braking train reaches about 1.5).
+inline constexpr double kMaxOutputSamples = 1e6;
+inline constexpr double kMaxAcceleration = 10.0;
+
 struct Scenario {
   std::string name;
   std::string file;
+  // Legal but implausible inputs (physics sanity), "file:line: key 'k': value
+  // ... (usual range ...)"; also logged as warnings when read.
+  std::vector<std::string> warnings;
   // The scenario's `running_safety:` section, read by the run's evaluation
   // (engine/analysis/safety_settings.hpp); empty when absent.
   std::optional<config::InputNode> running_safety;

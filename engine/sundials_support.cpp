@@ -147,6 +147,22 @@ std::string SundialsCommon::take_flag_name(char* name) {
   return out;
 }
 
+void SundialsCommon::check_setup(int flag, const char* call, const std::string& setting, FlagNameFn flag_name) const {
+  if (flag >= 0) return;
+  const std::string fname = take_flag_name(flag_name(flag));
+  std::string msg = std::string("integrator set-up: ") + call + (setting.empty() ? "" : " (" + setting + ")") +
+                    " failed with " + fname + " (flag " + std::to_string(flag) + ")";
+  if (!last_error.empty()) msg += ": " + last_error;
+  if (fname.find("ILL_INPUT") != std::string::npos)
+    throw InputError(msg + "; check the scenario's integrator settings (min_step, max_step, initial_step, "
+                           "max_order, tolerances)");
+  throw NumericalError(msg);
+}
+
+void SundialsCommon::check_created(const void* mem, const char* call) {
+  if (!mem) throw NumericalError(std::string("integrator set-up: ") + call + " returned no memory block");
+}
+
 std::string SundialsCommon::failure(double t, const std::string& name, int flag, const char* flag_name,
                                     bool is_explicit) const {
   if (model_failed)

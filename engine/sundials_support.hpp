@@ -53,6 +53,15 @@ struct SundialsCommon {
   // The *GetReturnFlagName functions of SUNDIALS return a malloc'd string that
   // the caller frees: copy it and free it.
   static std::string take_flag_name(char* name);
+  // A set-up call (CVodeSet*, ARKStepSet*, ...) returning `flag`: negative is
+  // an error naming the call, the setting and SUNDIALS' flag name (from
+  // `flag_name`, e.g. CVodeGetReturnFlagName) and SUNDIALS' own message:
+  // InputError for *_ILL_INPUT (a setting the integrator refuses, such as
+  // min_step above max_step), NumericalError otherwise (memory, solver set-up).
+  using FlagNameFn = char* (*)(long int);
+  void check_setup(int flag, const char* call, const std::string& setting, FlagNameFn flag_name) const;
+  // A constructor of SUNDIALS (CVodeCreate, ...) that returned nullptr.
+  static void check_created(const void* mem, const char* call);
 };
 
 }  // namespace railsim::engine

@@ -28,11 +28,35 @@ int body_ref(const InputNode& n, const Model& m, bool allow_track) {
   return i;
 }
 
+// Every element of the model by name (all kinds share one name space).
+bool element_name_taken(const Model& m, const std::string& name) {
+  for (const auto& e : m.springs)
+    if (e.name == name) return true;
+  for (const auto& e : m.bump_stops)
+    if (e.name == name) return true;
+  for (const auto& e : m.yaw_dampers)
+    if (e.name == name) return true;
+  for (const auto& e : m.anti_roll_bars)
+    if (e.name == name) return true;
+  return false;
+}
+
+// An element must join two different bodies: from a body to itself it would
+// exert no net force but shift the reported loads.
+void check_ends(const InputNode& e, int a, int b) {
+  if (a == b)
+    e.at("other").fail("element joins body '" + e.string("body") + "' to itself; 'other' must be another body or "
+                       "'track'");
+}
+
 Eigen::Vector3d centre(const Model& m, int b) { return b >= 0 ? m.bodies[b].position : Eigen::Vector3d::Zero(); }
 
 void add_element(const InputNode& e, Model& m, double side_sign, const std::string& suffix) {
   const std::string type = e.string("type");
   const std::string name = e.string("name") + suffix;
+  if (element_name_taken(m, name))
+    e.at("name").fail("duplicate element name '" + name + "' (each element needs its own name; a second element "
+                      "of the same name would add a second suspension)");
   auto mirror = [&](Eigen::Vector3d p) {
     p.y() *= side_sign;
     return p;
@@ -43,12 +67,14 @@ void add_element(const InputNode& e, Model& m, double side_sign, const std::stri
     a.name = name;
     a.body_a = body_ref(e.at("body"), m, false);
     a.body_b = body_ref(e.at("other"), m, true);
+    check_ends(e, a.body_a, a.body_b);
     a.stiffness = e.non_negative("stiffness");
     m.anti_roll_bars.push_back(a);
     return;
   }
   const int a = body_ref(e.at("body"), m, false);
   const int b = body_ref(e.at("other"), m, true);
+  check_ends(e, a, b);
   const Eigen::Vector3d at = mirror(vec3(e.at("at"), false));
   const Eigen::Vector3d other_at = e.has("other_at") ? mirror(vec3(e.at("other_at"), false)) : at;
   const Eigen::Vector3d ra = at - centre(m, a), rb = other_at - centre(m, b);
@@ -116,10 +142,23 @@ void load_vehicle(const InputNode& root, Model& m) {
     body.name = b.string("name");
     if (body.name == "track") b.at("name").fail("'track' is reserved for the track-following frame");
     if (m.body_index(body.name) >= 0) b.at("name").fail("duplicate body name '" + body.name + "'");
-    body.mass = b.positive("mass");
+    body.mass = b.in_range("mass", kMinBodyMass, kMaxBodyMass);
     body.inertia = vec3(b.at("inertia"), true);
     for (int k = 0; k < 3; ++k)
-      if (!(body.inertia[k] > 0)) b.at("inertia").fail("inertias must be positive");
+      if (!(body.inertia[k] >= kMinBodyInertia && body.inertia[k] <= kMaxBodyInertia))
+        b.at("inertia").fail("inertias must lie in [" + config::format_number(kMinBodyInertia) + ", " +
+                             config::format_number(kMaxBodyInertia) + "] kg m^2 (got " +
+                             config::format_number(body.inertia[k]) + ")");
+    // Principal moments of a rigid body obey Ixx + Iyy >= Izz (and cyclic).
+    for (int k = 0; k < 3; ++k) {
+      const double i = body.inertia[k], j = body.inertia[(k + 1) % 3], l = body.inertia[(k + 2) % 3];
+      if (j + l < i * (1.0 - 1e-9)) {
+        static const char* axis[3] = {"Ixx", "Iyy", "Izz"};
+        b.at("inertia").fail(std::string("the inertias violate the triangle inequality of a rigid body: ") +
+                             axis[(k + 1) % 3] + " + " + axis[(k + 2) % 3] + " = " + config::format_number(j + l) +
+                             " < " + axis[k] + " = " + config::format_number(i));
+      }
+    }
     body.position = vec3(b.at("position"), false);
     const std::string type = b.string("type");
     if (type == "wheelset") {

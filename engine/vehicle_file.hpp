@@ -18,6 +18,11 @@
 // reference, y left, z above the rail tops). `other: track` ties an element to
 // the track-following frame. `sides: both` duplicates an element mirrored in y
 // (names get _L / _R). Units SI.
+//
+// Checked as a whole: masses in [1, 1e6] kg and inertias in [1e-3, 1e8]
+// kg m^2 per body, inertias obeying the triangle inequality of a rigid body
+// (Ixx + Iyy >= Izz and cyclic), element names unique over all element kinds,
+// no element from a body to itself.
 #pragma once
 
 #include <string>
@@ -26,6 +31,10 @@
 #include "engine/model.hpp"
 
 namespace railsim::engine {
+
+// Sane ranges of a body (README "Exit codes and limits").
+inline constexpr double kMinBodyMass = 1.0, kMaxBodyMass = 1e6;          // [kg]
+inline constexpr double kMinBodyInertia = 1e-3, kMaxBodyInertia = 1e8;   // [kg m^2]
 
 // Fills model.vehicle_name, bodies, elements and wheelsets (geometry unset).
 void load_vehicle(const std::string& path, Model& model);

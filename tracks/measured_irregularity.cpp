@@ -9,6 +9,7 @@
 #include <fstream>
 
 #include "core/errors.hpp"
+#include "core/input_file.hpp"
 
 namespace railsim::tracks {
 
@@ -42,6 +43,7 @@ void smooth_step(double t, double& f, double& df) {
 }  // namespace
 
 MeasuredTable read_measured_irregularity(const std::string& path, double unit) {
+  check_input_file(path, "measured irregularity file");
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open measured irregularity file for reading");
   MeasuredTable t;

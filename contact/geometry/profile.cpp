@@ -4,17 +4,25 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include "core/content_hash.hpp"
 #include "core/data_dir.hpp"
 #include "core/errors.hpp"
+#include "core/input_file.hpp"
 
 namespace railsim::contact {
 
 namespace {
+
+// Largest plausible lateral extent of a profile [m] (a rail head is about
+// 70 mm, a wheel 130-150 mm wide; below 10 mm the profile is refused as too
+// short).
+constexpr double kMaxProfileWidth = 0.5;
 
 [[noreturn]] void fail(const std::string& where, const std::string& what) { throw InputError(where + ": " + what); }
 
@@ -82,6 +90,7 @@ struct RawProfile {
   std::vector<double> y, z;
   std::vector<int> lines;
   double unit = 0.0;  // metres per file unit, 0 = unknown
+  std::string unit_from;  // where the unit was declared (for messages)
   bool mirror_y = false, mirror_z = false;
 };
 
@@ -122,13 +131,17 @@ RawProfile read_simpack(const std::string& path, std::istream& in) {
       if (!(f > 0.0) || !std::isfinite(f))
         fail(path + ":" + std::to_string(lineno), "key 'units.len.f': expected a positive number (got '" + val + "')");
       raw.unit = 1.0 / f;
+      raw.unit_from = "key 'units.len.f' on line " + std::to_string(lineno);
     } else if (key == "mirror.y") {
       raw.mirror_y = std::atoi(val.c_str()) == 1;
     } else if (key == "mirror.z") {
       raw.mirror_z = std::atoi(val.c_str()) == 1;
     }
   }
-  if (raw.unit == 0.0) raw.unit = 1e-3;  // SIMPACK default length unit: mm (CONTACT's too)
+  if (raw.unit == 0.0) {
+    raw.unit = 1e-3;  // SIMPACK default length unit: mm (CONTACT's too)
+    raw.unit_from = "the SIMPACK default (no key 'units.len.f')";
+  }
   return raw;
 }
 
@@ -145,6 +158,7 @@ RawProfile read_columns(const std::string& path, std::istream& in) {
       if (l.find("units") != std::string::npos) {
         if (l.find("mm") != std::string::npos) raw.unit = 1e-3;
         else if (l.find(" m") != std::string::npos || ends_with(l, ":m")) raw.unit = 1.0;
+        raw.unit_from = "the 'units' line " + std::to_string(lineno);
       }
       continue;
     }
@@ -159,6 +173,7 @@ RawProfile read_columns(const std::string& path, std::istream& in) {
         else if (l.find("_m") != std::string::npos || l.find("[m]") != std::string::npos ||
                  l.find("(m)") != std::string::npos)
           raw.unit = 1.0;
+        raw.unit_from = "the column names on line " + std::to_string(lineno);
         continue;
       }
       fail(path + ":" + std::to_string(lineno), "expected two numbers 'y, z', got '" + s + "'");
@@ -261,13 +276,18 @@ Profile read_profile(const std::string& path_or_name, ProfileKind kind, const Pr
   if ((lname == "uic60" || lname == "uic60_mbench" || lname == "uic60_true") && kind != ProfileKind::rail)
     fail(path_or_name, "UIC60 is a rail profile, not a wheel profile");
 
+  std::error_code ec;
+  if (std::filesystem::exists(path, ec)) check_input_file(path, std::string(kind_name(kind)) + " profile");
   std::ifstream in(path);
   if (!in)
     fail(path, std::string("cannot open ") + kind_name(kind) + " profile (give a file or one of the names: " +
                    shipped_profile_names() + ")");
   const std::string ext = lower(path.size() >= 4 ? path.substr(path.size() - 4) : path);
   RawProfile raw = (ext == ".prw" || ext == ".prr") ? read_simpack(path, in) : read_columns(path, in);
-  if (options.unit > 0.0) raw.unit = options.unit;
+  if (options.unit > 0.0) {
+    raw.unit = options.unit;
+    raw.unit_from = "the unit option";
+  }
   if (raw.unit == 0.0)
     fail(path, "length unit unknown: name the columns y_mm,z_mm or y_m,z_m, add a '# units: mm' line, or give the unit option");
   if (options.z_up) raw.mirror_z = !raw.mirror_z;
@@ -276,6 +296,22 @@ Profile read_profile(const std::string& path_or_name, ProfileKind kind, const Pr
   for (std::size_t i = 0; i < raw.y.size(); ++i) {
     raw.y[i] *= raw.unit * (raw.mirror_y ? -1.0 : 1.0);
     raw.z[i] *= raw.unit * (raw.mirror_z ? -1.0 : 1.0);
+  }
+  {
+    // A profile in millimetres declared as metres (or the reverse) is 1000
+    // times too wide (narrow): refuse it naming the declared unit.
+    const auto [ymin, ymax] = std::minmax_element(raw.y.begin(), raw.y.end());
+    const double width = *ymax - *ymin;
+    if (std::isfinite(width) && width > kMaxProfileWidth) {
+      char buf[128];
+      std::snprintf(buf, sizeof buf, "lateral extent %.6g mm, more than the plausible %g mm", width * 1e3,
+                    kMaxProfileWidth * 1e3);
+      fail(path, std::string(buf) + " of a " + kind_name(kind) + " profile with the length unit " +
+                     (raw.unit == 1.0 ? std::string("m") : raw.unit == 1e-3 ? std::string("mm")
+                                                                             : std::to_string(raw.unit) + " m") +
+                     " from " + (raw.unit_from.empty() ? std::string("the file") : raw.unit_from) +
+                     ": are the numbers in another unit?");
+    }
   }
   // A wheel's flange (largest z) must lie at negative y (field side positive).
   if (kind == ProfileKind::wheel) {

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "contact/hertz.hpp"
+#include "contact/mim/convolution.hpp"
 #include "core/errors.hpp"
 
 namespace railsim::contact::mim {
@@ -47,9 +48,24 @@ void MimOptions::check() const {
 
 MimSolver::MimSolver(const MimOptions& options) : opt_(options) { opt_.check(); }
 
+double mim_memory_estimate(int mx, int my) {
+  const double n0 = fft_friendly_size(2 * my - 1), n1 = fft_friendly_size(2 * mx - 1);
+  const double nc = std::floor(n1 / 2) + 1;
+  return 3 * 8 * n0 * n1 + 9 * 16 * n0 * nc + 700.0 * mx * my;
+}
+
 void MimSolver::prepare(const ContactGrid& grid, const Material& material) {
   grid.check("mim");
   check_material(material);
+  // Bounded memory: refuse before allocating.
+  if (const double bytes = mim_memory_estimate(grid.mx, grid.my); bytes > kMaxMimBytes) {
+    char buf[256];
+    std::snprintf(buf, sizeof buf,
+                  "mim: a grid of %d x %d elements needs about %.3g GB of memory, more than the limit of %.3g GB; "
+                  "use fewer elements across the minor axis (grid, --grid; the patch's a/b sets the other side)",
+                  grid.mx, grid.my, bytes / 1e9, kMaxMimBytes / 1e9);
+    throw InputError(buf);
+  }
   const ElasticPair pair{material.shear_modulus(), material.nu, 0.0};
   const double layer = opt_.layer.compliance();
   if (!op_ || !op_->matches(grid, pair, layer)) {

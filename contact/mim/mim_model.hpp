@@ -47,6 +47,13 @@
 
 namespace railsim::contact::mim {
 
+// Largest working memory of one solver (README "Exit codes and limits") and
+// the estimate for a grid of mx x my elements [bytes]: the FFT convolution's
+// padded real and complex arrays (3 real, 2 + 7 kernel complex) and about
+// 700 bytes per element for the normal and tangential (Anderson) solvers.
+inline constexpr double kMaxMimBytes = 4.0 * (1ull << 30);
+double mim_memory_estimate(int mx, int my);
+
 struct MimOptions {
   int grid = 40;                  // elements across the minor axis (Hertzian input)
   double tolerance = 1e-7;        // tangential solver, relative residual

@@ -50,3 +50,23 @@ TEST_CASE("YAML syntax errors carry the line", "[config]") {
 TEST_CASE("missing file is an input error", "[config]") {
   CHECK(error_of([] { InputNode::load_file("/nonexistent/file.yaml"); }).find("cannot open") != std::string::npos);
 }
+
+TEST_CASE("a key given twice is an error naming both lines, in maps at any depth", "[config]") {
+  CHECK(error_of([] { InputNode::load_string("a: 1\nb: 2\na: 3\n", "d.yaml"); }) ==
+        "d.yaml:3: key 'a': given twice (first on line 1); give each key once");
+  CHECK(error_of([] { InputNode::load_string("m:\n  x: 1\n  y: 2\n  x: 1\n", "d.yaml"); }) ==
+        "d.yaml:4: key 'm.x': given twice (first on line 2); give each key once");
+  CHECK(error_of([] { InputNode::load_string("l:\n  - {k: 1, k: 2}\n", "d.yaml"); }) ==
+        "d.yaml:2: key 'l[0].k': given twice (first on line 2); give each key once");
+  // The same key in two different maps is fine.
+  CHECK(error_of([] { InputNode::load_string("a: {k: 1}\nb: {k: 2}\n", "d.yaml"); }).empty());
+}
+
+TEST_CASE("messages quote at most one shortened line of the input", "[config]") {
+  const std::string junk(5000, 'x');
+  const std::string msg = error_of([&] { InputNode::load_string("v: " + junk + "\n", "j.yaml").number("v"); });
+  CHECK(msg == "j.yaml:1: key 'v': expected a finite number (got '" + std::string(80, 'x') + "...')");
+  const std::string root = error_of([&] { InputNode::load_string(junk, "j.yaml").at("k"); });
+  CHECK(root.size() < 200);
+  CHECK(root.find("...") != std::string::npos);
+}

@@ -1,0 +1,74 @@
+// Options checks shared by all subcommands; see support_option_checks.hpp.
+#include "cli/support_option_checks.hpp"
+
+#include <cmath>
+#include <cstdlib>
+
+namespace railsim::cli {
+
+namespace {
+
+// CLI11 prefixes a validator's message with the option's name:
+// "--v-min: expected a finite number (got 'nan')".
+const CLI::Validator kFinite(
+    [](std::string& s) -> std::string {
+      const char* b = s.c_str();
+      char* e = nullptr;
+      const double v = std::strtod(b, &e);
+      if (e != b && !std::isfinite(v)) return "expected a finite number (got '" + s + "')";
+      return {};  // not a number at all: CLI11's own conversion reports it
+    },
+    "FINITE", "finite");
+
+const CLI::Validator kNotEmpty(
+    [](std::string& s) -> std::string { return s.empty() ? "expected a file or folder name (got '')" : std::string(); },
+    "NONEMPTY", "not empty");
+
+void add_checks(CLI::App& cmd) {
+  for (CLI::Option* o : cmd.get_options()) {
+    const std::string type = o->get_type_name();
+    if (type.find("FLOAT") != std::string::npos) o->check(kFinite);
+    if (o->check_lname("out") || o->check_sname("o")) o->check(kNotEmpty);
+  }
+  for (CLI::App* sub : cmd.get_subcommands([](CLI::App*) { return true; })) add_checks(*sub);
+}
+
+}  // namespace
+
+void add_common_checks(CLI::App& app) { add_checks(app); }
+
+std::string subcommand_names(const CLI::App& app) {
+  std::string out;
+  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
+    out += (out.empty() ? "" : ", ") + sub->get_name();
+  return out;
+}
+
+std::string unknown_subcommand(const CLI::App& app, int argc, const char* const* argv) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a.empty()) return "";
+    if (a[0] == '-') {
+      // A top-level option taking a value (--log-level X): skip the value.
+      if (a.find('=') == std::string::npos) {
+        const CLI::Option* o = nullptr;
+        try {
+          o = app.get_option_no_throw(a);
+        } catch (...) {
+          o = nullptr;
+        }
+        if (o && o->get_type_size() > 0 && i + 1 < argc) ++i;
+      }
+      continue;
+    }
+    try {
+      (void)app.get_subcommand(a);
+      return "";
+    } catch (const CLI::OptionNotFound&) {
+      return a;
+    }
+  }
+  return "";
+}
+
+}  // namespace railsim::cli

@@ -1,0 +1,23 @@
+// Checks shared by every subcommand's options, applied once in main():
+// a numeric option (CLI11 type FLOAT) must be a finite number ("nan", "inf"
+// refused naming the option: CLI::Range lets NaN through); an output option
+// (--out, -o) must not be empty; an unknown subcommand is named in the error.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+
+namespace railsim::cli {
+
+// Add the finite-number and non-empty-output checks to every option of
+// every subcommand of `app` (call after all subcommands are registered).
+void add_common_checks(CLI::App& app);
+
+// The first command-line word that should name a subcommand but names none
+// ("" when there is none), skipping the values of the top-level options.
+std::string unknown_subcommand(const CLI::App& app, int argc, const char* const* argv);
+
+// "run, critical-speed, ..." in registration order.
+std::string subcommand_names(const CLI::App& app);
+
+}  // namespace railsim::cli

@@ -1,0 +1,27 @@
+// One writer per output folder: a process that writes into DIR holds an
+// exclusive advisory lock (flock(2)) on DIR/.railsim.lock for as long as the
+// OutputLock lives. A second process asking for the same folder gets an
+// InputError naming the folder and the holder's pid (exit 2) instead of
+// writing over, or deleting, the first one's partial files. The kernel drops
+// the lock when the holder exits, even by kill -9, so a folder is never left
+// locked (the empty lock file stays; it is harmless and reused).
+#pragma once
+
+#include <string>
+
+namespace railsim {
+
+class OutputLock {
+ public:
+  // Creates `dir` if needed, then locks it; throws InputError when another
+  // process holds the lock or the lock file cannot be created.
+  explicit OutputLock(const std::string& dir);
+  ~OutputLock();
+  OutputLock(const OutputLock&) = delete;
+  OutputLock& operator=(const OutputLock&) = delete;
+
+ private:
+  int fd_ = -1;
+};
+
+}  // namespace railsim
