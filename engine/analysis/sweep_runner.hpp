@@ -57,8 +57,9 @@ std::vector<SweepResult> read_finished_points(const std::string& output, std::si
 void write_sweep_file(const std::string& output, const std::vector<std::string>& columns,
                       const std::vector<SweepResult>& rows);
 
-// MPI helpers (no-ops returning rank 0 of 1 without MPI). mpi_init is
-// idempotent and registers finalisation at exit.
+// MPI context (rank 0 of 1 without MPI, or when not launched by mpirun).
+// mpi_context() initialises MPI on its first call under mpirun and registers
+// MPI_Finalize at exit; later calls return the same rank and size.
 struct MpiContext {
   int rank = 0;
   int size = 1;
