@@ -808,6 +808,7 @@ ScenarioRunResult run_scenario(const Scenario& sc, const ScenarioRunOptions& o) 
   summary.set("max_lateral_shift_absolute_definition", "relative to the design centre line of the track [m]");
   summary.set("max_lateral_shift_absolute_per_wheelset", maxa);
   results::Json warn = results::Json::array();
+  for (const std::string& w : sc.warnings) warn.push(w);  // legal but implausible inputs (scenario reader)
   if (rs.invalid_contact_calls > 0)
     warn.push("contact model used outside its validity domain in " + std::to_string(rs.invalid_contact_calls) +
               " evaluations (first: " + rs.first_invalid_reason + ")");
