@@ -29,6 +29,26 @@ std::string scenario_path(const char* file) {
   return (std::filesystem::path(RAILSIM_SOURCE_DIR) / "scenarios" / file).string();
 }
 
+// Runs of the scene with the integrator options `o`, one per iteration; the
+// counters of the last.
+void time_runs(benchmark::State& state, const railsim::engine::Scenario& sc,
+               const railsim::engine::IntegratorOptions& o) {
+  using namespace railsim::engine;
+  double rtf = 0, rtf_cpu = 0, steps = 0, calls = 0;
+  for (auto _ : state) {
+    const RunSummary r = simulate(sc.model, o, sc.x0, sc.duration, sc.output_interval);
+    rtf = r.real_time_factor;
+    rtf_cpu = r.real_time_factor_cpu;
+    steps = double(r.stats.steps);
+    calls = double(r.stats.rhs_calls);
+  }
+  state.counters["rtf"] = rtf;
+  state.counters["rtf_cpu"] = rtf_cpu;
+  state.counters["steps"] = steps;
+  state.counters["rhs_calls"] = calls;
+  state.counters["sim_s"] = sc.duration;
+}
+
 void run_scene(benchmark::State& state, const char* file, const char* wheelset_model, const char* method,
                double rtol = 0.0, double atol = 0.0) {
   using namespace railsim::engine;
@@ -46,19 +66,7 @@ void run_scene(benchmark::State& state, const char* file, const char* wheelset_m
   o.method = method;
   if (rtol > 0) o.rtol = rtol;  // tolerance override (0: the scenario's)
   if (atol > 0) o.atol = atol;
-  double rtf = 0, rtf_cpu = 0, steps = 0, calls = 0;
-  for (auto _ : state) {
-    const RunSummary r = simulate(sc.model, o, sc.x0, sc.duration, sc.output_interval);
-    rtf = r.real_time_factor;
-    rtf_cpu = r.real_time_factor_cpu;
-    steps = double(r.stats.steps);
-    calls = double(r.stats.rhs_calls);
-  }
-  state.counters["rtf"] = rtf;
-  state.counters["rtf_cpu"] = rtf_cpu;
-  state.counters["steps"] = steps;
-  state.counters["rhs_calls"] = calls;
-  state.counters["sim_s"] = sc.duration;
+  time_runs(state, sc, o);
 }
 
 // A scenario file run as `railsim run` runs it (equilibrium start included),
@@ -79,19 +87,7 @@ void run_file(benchmark::State& state, const char* file, const char* wheelset_mo
   text.replace(at, key.size(), std::string("\nwheelset_model: ") + wheelset_model);
   const Scenario sc = load_scenario(railsim::config::InputNode::load_string(text, path),
                                     std::filesystem::path(path).parent_path().string());
-  double rtf = 0, rtf_cpu = 0, steps = 0, calls = 0;
-  for (auto _ : state) {
-    const RunSummary r = simulate(sc.model, sc.integrator, sc.x0, sc.duration, sc.output_interval);
-    rtf = r.real_time_factor;
-    rtf_cpu = r.real_time_factor_cpu;
-    steps = double(r.stats.steps);
-    calls = double(r.stats.rhs_calls);
-  }
-  state.counters["rtf"] = rtf;
-  state.counters["rtf_cpu"] = rtf_cpu;
-  state.counters["steps"] = steps;
-  state.counters["rhs_calls"] = calls;
-  state.counters["sim_s"] = sc.duration;
+  time_runs(state, sc, sc.integrator);
 }
 
 void rhs_eval(benchmark::State& state, const char* file) {
