@@ -22,7 +22,8 @@ struct WheelOutput {
   double Fx = 0.0;   // longitudinal creep force [N]
   double Fy = 0.0;   // lateral creep force in the contact plane [N]
   double Mz = 0.0;   // spin moment [N m]
-  contact::Creepages creep;
+  contact::Creepages creep;     // of the most loaded point
+  double Tgamma = 0.0;          // wear number, summed over the loaded points (wear_number.hpp) [N]
   double contact_y = 0.0;       // lateral position of the contact point on the rail, track y [m]
   double contact_angle = 0.0;   // [rad]
   double rolling_radius = 0.0;  // [m]

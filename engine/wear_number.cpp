@@ -4,7 +4,7 @@
 namespace railsim::engine {
 
 double wear_number(const WheelOutput& w) {
-  return -(w.Fx * w.creep.xi + w.Fy * w.creep.eta + w.Mz * w.creep.phi);
+  return w.Tgamma;
 }
 
 }  // namespace railsim::engine

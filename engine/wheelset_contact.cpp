@@ -8,6 +8,7 @@
 #include "contact/hertz.hpp"
 #include "engine/creepages.hpp"
 #include "engine/strip_patches.hpp"
+#include "engine/wear_number.hpp"
 
 namespace railsim::engine {
 
@@ -427,6 +428,7 @@ bool wheelset_forces(const Model& model, Data& d, int w, const double* x, double
       out.Fx += cf.Fx;
       out.Fy += cf.Fy;
       out.Mz += cf.Mz;
+      out.Tgamma += point_wear_number(cf, cr);
       if (Np > Nmax) {  // creepages and position of the most loaded point
         Nmax = Np;
         out.creep = cr;

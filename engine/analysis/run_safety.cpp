@@ -136,11 +136,16 @@ RunSafety evaluate_run_safety(const RunHistory& h, const std::vector<TrackSectio
     for (int side = 0; side < 2; ++side) {
       const WheelHistory& wl = wh.wheel[side];
       WheelSafety& s = ws.wheel[side];
+      double stretch_start = 0.0;
+      bool above = false;
       for (std::size_t i = 0; i < n; ++i) {
         const double yq = wl.Q[i] > 0.0 ? std::fabs(wl.Y[i] / wl.Q[i]) : 0.0;
         if (yq > s.max_abs_yq.value) s.max_abs_yq = {yq, dist[w][i], time[i]};
+        if (yq > out.nadal && !above) stretch_start = dist[w][i];
+        above = yq > out.nadal;
+        if (above) s.longest_exceedance = std::max(s.longest_exceedance, std::fabs(dist[w][i] - stretch_start));
       }
-      s.nadal_pass = s.max_abs_yq.value <= out.nadal;
+      s.nadal_pass = s.max_abs_yq.value <= out.nadal;  // until the 2 m means are known (below)
     }
     for (std::size_t i = 0; i < n && i < wh.y.size(); ++i) {
       if (std::fabs(wh.y[i]) > ws.max_shift.value) ws.max_shift = {std::fabs(wh.y[i]), dist[w][i], time[i]};
@@ -152,6 +157,32 @@ RunSafety evaluate_run_safety(const RunHistory& h, const std::vector<TrackSectio
   }
 
   out.en14363_evaluated = strictly_increasing(h.distance) && h.distance.back() - h.distance.front() >= set.window;
+  if (out.en14363_evaluated) {  // Nadal on the 2 m sliding mean of the unfiltered |Y/Q| (see the header)
+    for (std::size_t w = 0; w < h.wheelsets.size(); ++w) {
+      WheelsetSafety& ws = out.wheelsets[w];
+      for (int side = 0; side < 2; ++side) {
+        const WheelHistory& wl = h.wheelsets[w].wheel[side];
+        std::vector<double> yq(n);
+        for (std::size_t i = 0; i < n; ++i) yq[i] = wl.Q[i] > 0.0 ? std::fabs(wl.Y[i] / wl.Q[i]) : 0.0;
+        const Windowed m = sliding(false, dist[w], time, yq, set.window, set.step);
+        WheelSafety& s = ws.wheel[side];
+        for (std::size_t j = 0; j < m.y.size(); ++j)
+          if (m.y[j] > s.max_yq_2m.value) s.max_yq_2m = {m.y[j], m.x[j], m.t[j]};
+        s.nadal_on_2m = true;
+        s.nadal_pass = s.max_yq_2m.value <= out.nadal;
+        if (s.max_abs_yq.value > out.nadal && s.nadal_pass)
+          out.notes.push_back(wheel_item(ws.name, side) +
+                              fmt(": instantaneous |Y/Q| %.3g above Nadal's %.3g at %.5g m", s.max_abs_yq.value,
+                                  out.nadal, s.max_abs_yq.distance) +
+                              fmt("; longest stretch above it %.2f m, largest 2 m mean %.3g: an impact, not a climb",
+                                  s.longest_exceedance, s.max_yq_2m.value));
+      }
+      ws.pass = ws.wheel[0].nadal_pass && ws.wheel[1].nadal_pass;
+    }
+  } else {
+    out.notes.push_back("Nadal judged on the instantaneous |Y/Q| peak: no 2 m windows (the vehicle runs less than " +
+                        fmt("%.3g", set.window) + " m or does not advance)");
+  }
   if (!out.en14363_evaluated) {
     out.notes.push_back("EN 14363 quantities not evaluated: the vehicle runs less than " +
                         fmt("%.3g", set.window) + " m (or does not advance)");
