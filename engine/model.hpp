@@ -37,7 +37,7 @@ struct Wheelset {
   // Full model: vertical approach of each wheel at x = 0 that carries its
   // static load (finalize_model; wheelset_contact.hpp) [m].
   double static_approach[2] = {0.0, 0.0};
-  int beta_state = -1;                 // full model: spin perturbation state
+  int beta_state = -1;                 // spin perturbation state (full model, or axle_rotation free)
 };
 
 // Speed V(t) = V0 + a t (a = 0: constant speed), distance s(t) = s0 + V0 t + a t^2 / 2.
@@ -66,6 +66,15 @@ struct Model {
   // (phi = (r_L - r_R) / (a_L + a_R), rigid rails) when true; held at zero when
   // false (the textbook model of physics-reference §8.1).
   bool kinematic_roll = true;
+  // Lateral wheelset model: the axle's rotation speed. Imposed (false): Omega =
+  // V / r0, the textbook lateral model's (Cooperrider's, DYTSI's); the axle then
+  // carries whatever torque the longitudinal creep forces need, which in flange
+  // contact is a braking torque (the two wheels' rolling radii differ by
+  // millimetres: sum Fx 16 kN on the coach's leading wheelset in an R 250 m
+  // curve). Free (true): the spin perturbation beta is a state, Iyy beta' =
+  // M_y, as in the full model: the axle rolls freely, sum Fx r ~ 0. The full
+  // model always has it.
+  bool free_axle_rotation = false;
   int n_states = 0;
   std::vector<std::string> state_names;
   bool finalized = false;

@@ -163,7 +163,7 @@ Scenario load_scenario(const std::string& path) {
 Scenario load_scenario(const InputNode& root, const std::string& base) {
   root.allow_only({"name", "description", "vehicle", "track", "speed", "speed_kmh", "acceleration", "start",
                    "start_distance", "duration", "output_interval", "wheelset_model", "max_lateral_shift",
-                   "wheelset_roll",
+                   "wheelset_roll", "axle_rotation",
                    "contact", "integrator", "initial", "critical_speed", "running_safety"});
   Scenario sc;
   sc.name = root.string_or("name", "");
@@ -218,6 +218,13 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
     const std::string v = wr->as_string();
     if (v != "kinematic" && v != "none") wr->fail("expected 'kinematic' or 'none' (got '" + v + "')");
     m.kinematic_roll = v == "kinematic";
+  }
+  // Axle rotation (lateral model; model.hpp): free unless the scenario imposes V / r0.
+  m.free_axle_rotation = true;
+  if (auto ar = root.find("axle_rotation")) {
+    const std::string v = ar->as_string();
+    if (v != "free" && v != "imposed") ar->fail("expected 'free' or 'imposed' (got '" + v + "')");
+    m.free_axle_rotation = v == "free";
   }
   if (root.has("max_lateral_shift")) m.max_lateral_shift = root.in_range("max_lateral_shift", 0.0, 0.2, true);
 

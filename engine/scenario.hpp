@@ -10,6 +10,8 @@
 //   duration: 5          # [s]
 //   output_interval: 0.005
 //   wheelset_model: lateral | full
+//   wheelset_roll: kinematic | none      # lateral model (model.hpp)
+//   axle_rotation: free | imposed        # lateral model: beta a state, or Omega = V / r0 (model.hpp)
 //   max_lateral_shift: 0.05   # [m], optional (default: geometry range)
 //   contact:
 //     geometry: {type: conical, r0: 0.46, conicity: 0.2, l0: 0.75, contact_angle: 0,

@@ -44,7 +44,7 @@ void assign_states(Model& model) {
         b.v_index[k] = n++;
         model.state_names.push_back(b.name + "." + dof_name(k) + "_rate");
       }
-    if (b.wheelset >= 0 && model.wheelset_model == WheelsetModel::full) {
+    if (b.wheelset >= 0 && (model.wheelset_model == WheelsetModel::full || model.free_axle_rotation)) {
       model.wheelsets[b.wheelset].beta_state = n++;
       model.state_names.push_back(b.name + ".spin_perturbation");
     }

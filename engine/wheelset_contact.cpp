@@ -305,7 +305,7 @@ bool wheelset_forces(const Model& model, Data& d, int w, const double* x, double
   const double dya = 0.5 * (T.dlat_left + T.dlat_right);
   WheelsetKinematics k;
   k.V = d.V;
-  k.Omega = d.V / geo.r0() + (full ? x[ws.beta_state] : 0.0);
+  k.Omega = d.V / geo.r0() + (ws.beta_state >= 0 ? x[ws.beta_state] : 0.0);
   k.kappa = T.curvature;
   k.y = m.q[kLat] - ya;
   k.ydot = m.v[kLat] - d.V * dya;
@@ -472,8 +472,8 @@ bool wheelset_forces(const Model& model, Data& d, int w, const double* x, double
     F[kVert] += Fz_sum;
     F[kRoll] += Mx_sum + Iy * k.Omega * (k.psidot + d.V * k.kappa);  // absolute yaw rate (frame turns at V kappa)
     F[kYaw] += -Iy * k.Omega * k.phidot;
-    xdot[ws.beta_state] = My_sum / Iy;
   }
+  if (ws.beta_state >= 0) xdot[ws.beta_state] = My_sum / body.inertia.y();
   return true;
 }
 
