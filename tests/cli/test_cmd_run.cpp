@@ -7,6 +7,8 @@
 // small one, lateral shifts relative to the rails, the charts.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <string>
 
@@ -46,7 +48,10 @@ TEST_CASE("railsim run: the coach hunting above its critical speed fails the ins
   // On its own S1002/UIC60 1:40 profiles (equivalent conicity 0.185 at 3 mm) the coach hunts
   // after the defect at 330 km/h (f0 5.3 Hz, above the 4.5 Hz it had on the Cooperrider
   // car's flatter table): (Sum Y)_rms 25.3 kN > 23.2 kN, bogie-frame rms 7.3 m/s^2 > 5.38
-  // m/s^2 (measured). At 250 km/h the motion decays: below 0.6 of both limits.
+  // m/s^2 (measured). At 250 km/h the motion decays (every wheelset's largest shift in the
+  // last 0.5 s below 0.35 of its peak after the defect: measured 0.12-0.26 with the free axle,
+  // 0.09-0.19 with the imposed axle rotation) and passes both limits ((Sum Y)_rms 14.3 kN
+  // against 23.2 kN; below 0.6 of it with the imposed rotation, whose transient decays faster).
   const std::string hot = test::temp_dir("run_hunting_330");
   auto r = test::run_railsim(coach("330", hot));
   INFO(r.output);
@@ -77,7 +82,20 @@ TEST_CASE("railsim run: the coach hunting above its critical speed fails the ins
   const json rms2 = worst_of(js, "sum_y_rms");
   INFO(rms2);
   CHECK(passes(rms2));
-  CHECK(number(rms2, "value") < 0.6 * number(rms2, "limit"));
+  CHECK(number(rms2, "value") < number(rms2, "limit"));
+  const auto ch = railsim::results::read_csv(cold + "/channels.csv");
+  for (int w = 1; w <= 4; ++w) {
+    const std::string col = "ws" + std::to_string(w) + ".y_rel";
+    double early = 0.0, late = 0.0;
+    for (std::size_t i = 0; i < ch.rows.size(); ++i) {
+      const double t = ch.number(i, "time"), y = std::abs(ch.number(i, col));
+      early = std::max(early, y);
+      if (t >= 3.5) late = std::max(late, y);
+    }
+    INFO(col << ": peak |y| " << early << " m, largest in 3.5-4 s " << late << " m");
+    CHECK(early > 3e-3);
+    CHECK(late < 0.35 * early);
+  }
   CHECK(passes(worst_of(js, "bogie_ay_rms")));
   CHECK(js["running_safety"]["pass"] == true);
 }
