@@ -170,6 +170,7 @@ Outcome analyse(const engine::Scenario& sc, const CriticalSpeedArgs& a, const st
     if (mpi.rank == 0) {
       results::CsvWriter csv(dir + "/ramping.csv", {"time_s", "speed_kmh", "max_lateral_mm"}, false, 1000);
       for (std::size_t i = 0; i < r.time.size(); ++i) csv.row({r.time[i], r.speed[i] * 3.6, r.max_lateral[i] * 1e3});
+      csv.close();
       results::draw(engine::ramping_chart(r, out.linear, o.threshold, "Ramping: " + sc.name), dir + "/ramping.png");
     }
   }
@@ -303,6 +304,7 @@ int run_reduction_study(const engine::Scenario& base, const CriticalSpeedArgs& a
           .cell(e.folder);
       csv.end_row();
     }
+    csv.close();
   }
   engine::reduction_study_summary(base, o, r).write_file(a.out + "/summary.json");
   engine::reduction_study_timing(r).write_file(a.out + "/timing.json");

@@ -27,7 +27,7 @@ void register_geometry(CLI::App& app, CommandRunner& run) {
         for (int c = 0; c < contact::ContactTable::kColumns; ++c) w.cell(t.value(r, c));
         w.end_row();
       }
-      w.flush();
+      w.close();
       // Flange contact onset: first shift where the touching point's contact angle exceeds 30 deg.
       const double lim = 30.0 * std::acos(-1.0) / 180.0;
       const auto names = contact::ContactTable::column_names();

@@ -76,7 +76,7 @@ int run_modes(const ModesArgs& a) {
       freq[k].x.push_back(v_kmh), freq[k].y.push_back(mode.frequency);
     }
   }
-  csv.flush();
+  csv.close();
   const double v_lin = engine::linear_critical_speed(sc, a.v_min_kmh / 3.6, a.v_max_kmh / 3.6);
   for (int k = 0; k < a.count; ++k) chart.series.push_back(zeta[k]), fchart.series.push_back(freq[k]);
   if (!std::isnan(v_lin)) {

@@ -83,7 +83,7 @@ int run_track(const TrackOptions& o) {
       sumsq[static_cast<std::size_t>(c)] += irr.value[static_cast<std::size_t>(c)] * irr.value[static_cast<std::size_t>(c)];
     }
   }
-  csv.flush();
+  csv.close();
   std::printf("track %s: %.3f m, %d segments, %zu irregularity components\n", track.name().c_str(), track.length(),
               track.alignment().segment_count(), track.irregularities().components().size());
   std::printf("sampled s = %.6g .. %.6g m every %.6g m: %ld rows -> %s\n", s0, s1, o.step, n, o.out.c_str());

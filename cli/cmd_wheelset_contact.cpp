@@ -118,7 +118,7 @@ int run_wheelset_contact(const WheelsetContactArgs& a) {
       }
     csv.end_row();
   }
-  csv.flush();
+  csv.close();
   std::printf("wrote %s (%zu positions, model %s)\n", a.out.c_str(), res.size(), a.model.c_str());
   return kExitSuccess;
 }

@@ -1,12 +1,16 @@
 // railsim: command-line front end. Parses arguments (CLI11), sets up logging
 // (spdlog, to stderr), runs one subcommand and maps failures to exit codes:
-// 0 success, 2 bad input, 3 numerical failure. `railsim --version` prints
+// 0 success, 2 bad input or a failed write (also of standard output), 3
+// numerical failure. `railsim --version` prints
 // "railsim X.Y.Z" (as help2man expects); `railsim version` says more.
 // Every numeric option is refused unless finite (cli/support_option_checks.hpp).
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
 #include <CLI/CLI.hpp>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <iostream>
 
 #include "cli/commands.hpp"
@@ -58,7 +62,13 @@ int main(int argc, char** argv) {
   spdlog::set_pattern("[%H:%M:%S.%e] [%^%l%$] %v");
 
   try {
-    return run ? run() : railsim::kExitSuccess;
+    const int code = run ? run() : railsim::kExitSuccess;
+    // Printed results count as output: a full disk behind
+    // standard output is a failed write (exit 2), not a success.
+    std::cout.flush();
+    if (std::fflush(stdout) != 0 || std::ferror(stdout) || !std::cout)
+      throw railsim::InputError(std::string("standard output: write failed (") + std::strerror(errno) + ")");
+    return code;
   } catch (const railsim::InputError& e) {
     spdlog::error("{}", e.what());
     return railsim::kExitBadInput;

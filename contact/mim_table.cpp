@@ -137,14 +137,6 @@ inline double v_of(double s) { return s / (1.0 + std::abs(s)); }
 inline double s_of_u(double u) { return u / (1.0 - u); }
 inline double s_of_v(double v) { return v / (1.0 - std::abs(v)); }
 
-std::string read_file(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
-  if (!f) return {};
-  std::ostringstream ss;
-  ss << f.rdbuf();
-  return ss.str();
-}
-
 // FFTW's planner is not thread-safe: a MimSolver plans (and frees plans) when
 // its grid changes, i.e. on the first solve for a new a/b, and when destroyed.
 // Its convolution serialises those calls with the program-wide
@@ -243,9 +235,9 @@ std::unique_ptr<MimTable> MimTable::build(const MimTableSpec& spec, const std::s
   const std::uint64_t spec_hash = spec.hash();
 
   // Resume from the valid records of an earlier, interrupted build.
-  std::FILE* log = nullptr;
+  AppendFile log;  // checked writes: a full disk stops the build naming the file
   if (!partial_path.empty()) {
-    const std::string old = read_file(partial_path);
+    const std::string old = read_own_file(partial_path);
     bool keep = old.size() >= sizeof(std::uint64_t);
     std::uint64_t h = 0;
     if (keep) std::memcpy(&h, old.data(), sizeof h);
@@ -266,16 +258,14 @@ std::unique_ptr<MimTable> MimTable::build(const MimTableSpec& spec, const std::s
       }
     }
     // Rewrite the log with only its valid part (drops a torn tail or a stale spec).
-    log = std::fopen(partial_path.c_str(), "wb");
-    if (!log) throw InputError("mim_table: cannot write '" + partial_path + "'");
+    log.open(partial_path, AppendFile::Mode::truncate);
     if (keep) {
-      std::fwrite(old.data(), 1, valid_end, log);
+      log.write(std::string_view(old.data(), valid_end));
     } else {
-      std::fwrite(&spec_hash, sizeof spec_hash, 1, log);
+      log.write(std::string_view(reinterpret_cast<const char*>(&spec_hash), sizeof spec_hash));
       ndone = 0;
       std::fill(done.begin(), done.end(), 0);
     }
-    std::fflush(log);
   }
 
   const std::size_t nj = spec.uxi.size(), nk = spec.ueta.size(), nl = spec.vpsi.size();
@@ -304,15 +294,14 @@ std::unique_ptr<MimTable> MimTable::build(const MimTableSpec& spec, const std::s
         done[idx] = 1;
         ++ndone;
         ++fresh;
-        if (log) {
+        if (log.is_open()) {
           char rec[kRecordSize];
           const std::uint64_t id = idx;
           std::memcpy(rec, &id, sizeof id);
           std::memcpy(rec + sizeof id, v, sizeof v);
           const std::uint64_t sum = fnv1a(rec, sizeof id + sizeof v);
           std::memcpy(rec + sizeof id + sizeof v, &sum, sizeof sum);
-          std::fwrite(rec, 1, kRecordSize, log);
-          std::fflush(log);
+          log.write(std::string_view(rec, kRecordSize));
         }
         if (options.progress) options.progress(ndone, total);
         if (options.stop_after > 0 && fresh >= options.stop_after) stop = true;
@@ -329,7 +318,7 @@ std::unique_ptr<MimTable> MimTable::build(const MimTableSpec& spec, const std::s
   std::vector<std::thread> pool;
   for (int n = 0; n < nthreads; ++n) pool.emplace_back(worker);
   for (auto& th : pool) th.join();
-  if (log) std::fclose(log);
+  if (!error) log.close();
   if (error) std::rethrow_exception(error);
   if (ndone < total) return nullptr;  // stopped early; the log holds the progress
   return t;
@@ -366,7 +355,7 @@ std::unique_ptr<MimTable> MimTable::load(const std::string& path, const MimTable
     throw InputError("mim_table: table file '" + path + "' " + why);
   };
   if (!std::filesystem::exists(path)) return refuse("does not exist");
-  const std::string buf = read_file(path);
+  const std::string buf = read_own_file(path);
   if (buf.size() < sizeof kMagic + sizeof(std::uint64_t) || std::memcmp(buf.data(), kMagic, sizeof kMagic) != 0)
     return refuse("is not a railsim MIM table (bad magic or empty)");
   std::uint64_t stored = 0;

@@ -47,15 +47,16 @@ class OdeintDopri5 final : public Integrator {
         if (last_step_ < opt_.min_step)
           throw NumericalError(integrator_failure(
               span.second, name(),
-              "step size collapsed to " + std::to_string(last_step_) + " s (below min_step " +
-                  std::to_string(opt_.min_step) + " s): the system is stiff or discontinuous here; use cvode_bdf"));
+              "step size collapsed to " + std::to_string(last_step_) + " s (below integrator.min_step, now " +
+                  std::to_string(opt_.min_step) + " s): the system is stiff or discontinuous here; use cvode_bdf, "
+                  "or lower min_step"));
         if (++steps_here > opt_.max_steps)
           throw NumericalError(integrator_failure(
               span.second, name(),
-              "more than " + std::to_string(opt_.max_steps) +
-                  " steps in one output interval (last step " + std::to_string(last_step_) +
-                  " s): the system is stiff for an explicit method (e.g. elastic contact or creep damping at low "
-                  "speed); use cvode_bdf or arkode_dirk"));
+              "more than integrator.max_steps steps in one output interval (last step " + std::to_string(last_step_) +
+                  " s): raise integrator.max_steps (now " + std::to_string(opt_.max_steps) +
+                  ", default 100000); the system may be stiff for an explicit method (e.g. elastic contact or creep "
+                  "damping at low speed): use cvode_bdf or arkode_dirk"));
       }
     } catch (const odeint::step_adjustment_error& e) {
       throw NumericalError(integrator_failure(stepper_.current_time(), name(),

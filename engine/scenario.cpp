@@ -6,6 +6,8 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <limits>
+#include <tuple>
 
 #include "contact/geometry/profile.hpp"
 #include "contact/geometry/conicity.hpp"
@@ -29,6 +31,33 @@ namespace {
 using config::InputNode;
 namespace fs = std::filesystem;
 
+// The allowed magnitude of an `initial:` deviation of state `idx`, its unit
+// and why: wheelset shifts within the contact geometry's lateral range, other
+// shifts within suspension travel (0.1 m), angles 0.1 rad (5.7 deg), rates
+// 5 m/s and 10 rad/s; other states only finite.
+struct InitialRange {
+  double limit = std::numeric_limits<double>::infinity();
+  std::string unit, why;
+};
+InitialRange initial_range(const Model& m, int idx) {
+  for (const auto& b : m.bodies)
+    for (int k = 0; k < kNumDof; ++k) {
+      if (b.q_index[k] == idx) {
+        const auto& geometry = b.wheelset >= 0 ? m.wheelsets[static_cast<std::size_t>(b.wheelset)].geometry : nullptr;
+        if (k == kLat && geometry) {
+          const double r = geometry->max_shift();
+          if (std::isfinite(r) && r > 0) return {r, "m", "the contact geometry's lateral range"};
+          return {0.05, "m", "a wheelset shift"};
+        }
+        if (k == kLat || k == kVert) return {0.1, "m", "suspension travel"};
+        return {0.1, "rad", "5.7 deg"};
+      }
+      if (b.v_index[k] == idx) return k == kLat || k == kVert ? InitialRange{5.0, "m/s", "a disturbance velocity"}
+                                                               : InitialRange{10.0, "rad/s", "a disturbance rate"};
+    }
+  return {};
+}
+
 std::string resolve(const std::string& base, const std::string& p) {
   if (p.empty() || fs::path(p).is_absolute()) return p;
   return (fs::path(base) / p).lexically_normal().string();
@@ -46,7 +75,8 @@ std::string existing_file(const InputNode& n, const std::string& base) {
 }
 
 std::shared_ptr<const ContactGeometry> load_geometry(const InputNode& g, const std::string& base,
-                                                     const contact::Material& material) {
+                                                     const contact::Material& material,
+                                                     std::vector<std::string>& warnings) {
   const std::string type = g.string("type");
   if (type == "conical") {
     g.allow_only({"type", "r0", "conicity", "l0", "contact_angle", "flange_clearance", "flange_stiffness",
@@ -97,6 +127,14 @@ std::shared_ptr<const ContactGeometry> load_geometry(const InputNode& g, const s
     };
     p.wheel = profile("wheel", p.wheel);
     p.rail = profile("rail", p.rail);
+    // Physics sanity: profile widths outside the usual range (a warning in the run's summary).
+    for (const auto& [key, path, kind] : {std::tuple{"wheel", p.wheel, contact::ProfileKind::wheel},
+                                          std::tuple{"rail", p.rail, contact::ProfileKind::rail}}) {
+      const std::string w = contact::profile_width_warning(contact::read_profile(path, kind));
+      if (w.empty()) continue;
+      warnings.push_back((g.has(key) ? g.at(key).where() : g.where()) + ": key 'contact.geometry." + key + "': " + w);
+      spdlog::warn("{}", warnings.back());
+    }
     p.setup = read_track_setup(g, "r0");
     const double s_max = g.has("max_shift") ? g.in_range("max_shift", 0.002, 0.02) : 0.015;
     p.grid.y_min = -s_max;
@@ -247,7 +285,7 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
     }
     co.shear_modulus = mat->has("shear_modulus") ? mat->positive("shear_modulus") : 0.0;
   }
-  auto geo = load_geometry(c.at("geometry"), base, co.material);
+  auto geo = load_geometry(c.at("geometry"), base, co.material, sc.warnings);
   sc.geometry_description = geo->describe();
   if (geo->max_shift() >= 3e-3)
     sc.equivalent_conicity_3mm = contact::equivalent_conicity(
@@ -298,7 +336,9 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
                     "linear_solver", "max_order", "stability_limit_detection", "atol_contact_modes"});
     auto& o = sc.integrator;
     o.method = in->string_or("method", o.method);
-    if (in->has("rtol")) o.rtol = in->in_range("rtol", 0.0, 0.1, true);
+    // Below 1e-12 (about 5000 machine epsilons) the integrators cannot meet rtol
+    // in double precision and end in CV_TOO_MUCH_WORK after minutes.
+    if (in->has("rtol")) o.rtol = in->in_range("rtol", 1e-12, 0.1);
     if (in->has("atol")) o.atol = in->in_range("atol", 0.0, 0.1, true);
     if (auto ms = in->find("max_step")) {
       // 0 would be read by the integrators as "no limit": refused, the key is omitted for that.
@@ -414,7 +454,13 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
         for (const auto& n : m.state_names) known += (known.empty() ? "" : ", ") + n;
         init->at(key).fail("unknown state '" + key + "' (states: " + known + ")");
       }
-      sc.x0[idx] += init->number(key);
+      const double v = init->number(key);
+      const InitialRange r = initial_range(m, idx);
+      if (!(std::fabs(v) <= r.limit))
+        init->at(key).fail("expected a deviation in [-" + config::format_number(r.limit) + ", " +
+                           config::format_number(r.limit) + "] " + r.unit + " (" + r.why + ") (got " +
+                           config::format_number(v) + ")");
+      sc.x0[idx] += v;
     }
   }
   return sc;

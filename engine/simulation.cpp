@@ -53,10 +53,15 @@ RunSummary simulate(const Model& model, const IntegratorOptions& options, const 
     } catch (const NumericalError& e) {
       // A derailment is physics (the model says so), anything else numerics:
       // say which, with the last step the integrator took.
-      char buf[96];
-      std::snprintf(buf, sizeof buf, " (last step %.3g s)", integ->stats().last_step);
-      if (data.derailed) throw DerailmentError(std::string(e.what()) + buf);
-      throw NumericalError(std::string(e.what()) + buf);
+      // The place: the track distance between the last output and this one.
+      const double t_prev = (k - 1) * dt_out;
+      char buf[256];
+      std::snprintf(buf, sizeof buf, " (last step %.3g s); place: track distance %.2f-%.2f m (t = %.4g-%.4g s)",
+                    integ->stats().last_step, model.speed.distance(t_prev), model.speed.distance(t), t_prev, t);
+      const std::string where = std::string(buf) + "; model: " + wheelset_model_name(model.wheelset_model) +
+                                " wheelset, contact " + model.coupling.describe();
+      if (data.derailed) throw DerailmentError(std::string(e.what()) + where);
+      throw NumericalError(std::string(e.what()) + where);
     }
     report(t);
   }

@@ -169,10 +169,41 @@ std::string SundialsCommon::failure(double t, const std::string& name, int flag,
     return integrator_failure(t, name, "model stopped: " + sys.failure_message() + (is_explicit ? kExplicitHint : ""));
   std::string what = std::string(flag_name) + " (flag " + std::to_string(flag) + ")";
   if (!last_error.empty()) what += ": " + last_error;
-  if (is_explicit && (flag == -1))
-    what += ". More than " + std::to_string(opt.max_steps) +
-            " steps in one output interval: the system is stiff for an explicit method (e.g. elastic contact or "
-            "creep damping at low speed); use cvode_bdf or arkode_dirk";
+  // What to change, by flag (CV_* and ARK_* share these values).
+  char num[64];
+  const auto g = [&](double v) {
+    std::snprintf(num, sizeof num, "%g", v);
+    return std::string(num);
+  };
+  switch (flag) {
+    case -1:  // TOO_MUCH_WORK
+      what += "; more than integrator.max_steps steps in one output interval: raise integrator.max_steps (now " +
+              std::to_string(opt.max_steps) + ", default 100000)";
+      what += is_explicit ? "; the system may be stiff for an explicit method (e.g. elastic contact or creep damping "
+                            "at low speed): use cvode_bdf or arkode_dirk"
+                          : "; if more steps do not help, the model is stiff or discontinuous here";
+      break;
+    case -2:  // TOO_MUCH_ACC
+      what += "; the tolerances ask for more accuracy than double precision gives: raise integrator.rtol (now " +
+              g(opt.rtol) + ") or integrator.atol (now " + g(opt.atol) + ")";
+      break;
+    case -3:  // ERR_FAILURE
+      if (opt.min_step > 1e-12)
+        what += "; the step could not shrink below integrator.min_step (now " + g(opt.min_step) +
+                " s): lower min_step or omit it";
+      else
+        what += "; the error test failed repeatedly: the model is discontinuous or stiff here; lower "
+                "integrator.max_step (now " + (opt.max_step > 0 ? g(opt.max_step) + " s" : std::string("unlimited")) +
+                ") or loosen integrator.rtol (now " + g(opt.rtol) + ")";
+      break;
+    case -4:  // CONV_FAILURE
+      what += "; the Newton iteration did not converge: use integrator.jacobian: assembled (now " + opt.jacobian +
+              ") or lower integrator.max_step (now " +
+              (opt.max_step > 0 ? g(opt.max_step) + " s" : std::string("unlimited")) + ")";
+      break;
+    default:
+      break;
+  }
   return integrator_failure(t, name, what);
 }
 

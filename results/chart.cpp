@@ -7,6 +7,10 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include <sys/wait.h>
+
+#include "core/errors.hpp"
+
 #include "core/data_dir.hpp"
 #include "results/json_writer.hpp"
 
@@ -127,7 +131,8 @@ bool draw_all(const std::vector<std::pair<const Chart*, std::string>>& charts) {
   std::string args;
   for (const auto& [chart, png] : charts) {
     std::error_code ec;
-    std::filesystem::remove(png, ec);  // a stale PNG must not pass for a new one
+    // A stale PNG must not pass for a new one (a device such as /dev/full stays).
+    if (std::filesystem::is_regular_file(png, ec)) std::filesystem::remove(png, ec);
     args += " " + shell_quote(write_spec(*chart, png));
   }
   // The chart script ships in the data folder (plots/render_chart.py).
@@ -141,7 +146,29 @@ bool draw_all(const std::vector<std::pair<const Chart*, std::string>>& charts) {
   }
   const std::string python = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
   const std::string cmd = python + " " + shell_quote(script) + args + " 2>&1";
-  const bool ran = std::system(cmd.c_str()) == 0;
+  // The script's messages are passed on; exit status 3 means a PNG could not
+  // be written (each named on a line "PATH: write failed (reason)"): an error.
+  std::string output;
+  int status = -1;
+  if (std::FILE* p = ::popen(cmd.c_str(), "r")) {
+    char buf[4096];
+    for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, p)) > 0;) output.append(buf, n);
+    status = ::pclose(p);
+  }
+  if (!output.empty()) std::fwrite(output.data(), 1, output.size(), stdout);
+  const int code = status != -1 && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  if (code == 3) {
+    std::string failed;
+    for (std::size_t at = 0, end; at < output.size(); at = end + 1) {
+      end = output.find('\n', at);
+      if (end == std::string::npos) end = output.size();
+      const std::string line = output.substr(at, end - at);
+      if (line.find(": write failed") != std::string::npos)
+        failed += (failed.empty() ? "" : "; ") + line.substr(line.rfind("render_chart.py: ", 0) == 0 ? 17 : 0);
+    }
+    throw InputError(failed.empty() ? std::string("charts: a PNG could not be written") : failed);
+  }
+  const bool ran = code == 0;
   bool ok = true;
   for (const auto& [chart, png] : charts) {
     if (ran && std::filesystem::exists(png)) continue;

@@ -83,7 +83,10 @@ struct Chart {
 };
 
 // Render `chart` to `png_path` (also writes png_path + ".json"). Returns true
-// when the PNG was produced; otherwise logs a warning and returns false.
+// when the PNG was produced; otherwise logs a warning and returns false (no
+// python3-matplotlib, no plotting script: the data stay in the .json). A PNG
+// or description that cannot be written (disk full, no permission) throws
+// InputError naming the file.
 bool draw(const Chart& chart, const std::string& png_path);
 
 // Render several charts with one python3 process (saves its start-up, about a

@@ -25,17 +25,31 @@ CsvWriter::CsvWriter(const std::string& path, std::vector<std::string> columns, 
     }
   }
   file_ = std::fopen(path.c_str(), append ? "ab" : "wb");
-  if (!file_) throw InputError(path + ": cannot open for writing");
+  if (!file_) throw InputError(path + ": cannot open for writing (" + std::strerror(errno) + ")");
   if (write_header) {
     for (std::size_t i = 0; i < columns_.size(); ++i)
       std::fprintf(file_, "%s%s", i ? "," : "", columns_[i].c_str());
     std::fputc('\n', file_);
-    std::fflush(file_);
+    if (std::fflush(file_) != 0 || std::ferror(file_)) {
+      const int err = errno;
+      std::fclose(file_);
+      file_ = nullptr;
+      throw InputError(path + ": write failed (" + std::strerror(err) + ")");
+    }
   }
 }
 
 CsvWriter::~CsvWriter() {
-  if (file_) std::fclose(file_);
+  if (file_) std::fclose(file_);  // unchecked here: close() reports a failure
+}
+
+void CsvWriter::close() {
+  if (!file_) return;
+  flush();
+  std::FILE* f = file_;
+  file_ = nullptr;
+  if (std::fclose(f) != 0)
+    throw InputError(path_ + ": write failed at close (" + std::strerror(errno) + "): the last rows may be lost");
 }
 
 void CsvWriter::separator() {
@@ -85,7 +99,8 @@ void CsvWriter::end_row() {
                            std::to_string(columns_.size()));
   std::fputc('\n', file_);
   cells_in_row_ = 0;
-  if (++rows_since_flush_ >= flush_every_) flush();
+  // A buffered write that already failed (the buffer went out full) shows at once.
+  if (++rows_since_flush_ >= flush_every_ || std::ferror(file_)) flush();
 }
 
 void CsvWriter::row(const std::vector<double>& values) {
@@ -96,6 +111,7 @@ void CsvWriter::row(const std::vector<double>& values) {
 void CsvWriter::flush() {
   // A full disk or a lost device shows here (the rows are buffered): an
   // error naming the file, never a run that ends as if its rows were kept.
+  if (!file_) throw std::logic_error(path_ + ": write after close");
   if (std::fflush(file_) != 0 || std::ferror(file_))
     throw InputError(path_ + ": write failed (" + std::strerror(errno) + "): the rows since the last flush are lost");
   rows_since_flush_ = 0;

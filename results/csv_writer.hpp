@@ -1,7 +1,8 @@
 // Streaming CSV writer for result channels.
 //
 // Rows are written as they come and flushed at once (flush_every = 1) or every
-// N rows, so an interrupted run keeps what it had computed. Numbers are written
+// N rows, so an interrupted run keeps what it had computed. Every flush and
+// the close() are checked: a full disk is an InputError naming the file. Numbers are written
 // with 10 significant digits by default (enough for SI channels), text cells are
 // quoted when they contain a comma or quote.
 #pragma once
@@ -38,6 +39,9 @@ class CsvWriter {
   const std::vector<std::string>& columns() const { return columns_; }
   const std::string& path() const { return path_; }
   void flush();
+  // Flush and close, reporting a failure (InputError naming the file). Call it
+  // when the file is complete: the destructor closes without reporting.
+  void close();
 
  private:
   void separator();

@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/errors.hpp"
 #include "core/fftw_planner_lock.hpp"
 
 namespace railsim::results {
@@ -33,7 +34,8 @@ SpectralPeak dominant_frequency(const std::vector<double>& x, double fs, double 
   std::unique_ptr<double, FftwFree> in(static_cast<double*>(fftw_malloc(sizeof(double) * m)));
   std::unique_ptr<fftw_complex, FftwFree> out(
       static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * (m / 2 + 1))));
-  if (!in || !out) throw std::runtime_error("dominant_frequency: out of memory");
+  if (!in || !out)
+    throw NumericalError("dominant_frequency: out of memory for an FFT of " + std::to_string(m) + " samples");
   double mean = 0.0;
   for (double v : x) mean += v;
   mean /= static_cast<double>(n);
@@ -51,7 +53,9 @@ SpectralPeak dominant_frequency(const std::vector<double>& x, double fs, double 
     std::lock_guard<std::mutex> lock(fftw_planner_mutex());
     plan = fftw_plan_dft_r2c_1d(static_cast<int>(m), in.get(), out.get(), FFTW_ESTIMATE);
   }
-  if (!plan) throw std::runtime_error("dominant_frequency: FFTW could not plan a transform");
+  if (!plan)
+    throw NumericalError("dominant_frequency: FFTW returned no plan (NULL) for a real transform of " +
+                         std::to_string(m) + " samples (out of memory?)");
   fftw_execute(plan);
   {
     std::lock_guard<std::mutex> lock(fftw_planner_mutex());

@@ -36,7 +36,9 @@ void inverse_fft(fftw_complex* in, double* out, int n) {
     std::lock_guard<std::mutex> lock(fftw_planner_mutex());
     plan = fftw_plan_dft_c2r_1d(n, in, out, FFTW_ESTIMATE);
   }
-  if (!plan) throw NumericalError("psd synthesis: FFTW could not plan a transform of size " + std::to_string(n));
+  if (!plan)
+    throw NumericalError("psd synthesis: FFTW returned no plan (NULL) for an inverse real transform of " +
+                         std::to_string(n) + " samples (out of memory?)");
   fftw_execute(plan);
   std::lock_guard<std::mutex> lock(fftw_planner_mutex());
   fftw_destroy_plan(plan);

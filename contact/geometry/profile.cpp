@@ -262,6 +262,18 @@ std::string shipped_profile_dir() {
   return railsim::data_path("profiles");
 }
 
+std::string profile_width_warning(const Profile& p) {
+  if (p.y().empty()) return {};
+  const double width = p.y().back() - p.y().front();  // points ordered by increasing y
+  const bool wheel = p.kind() == ProfileKind::wheel;
+  const double lo = wheel ? kUsualWheelWidthMin : kUsualRailWidthMin;
+  if (width >= lo && width <= kUsualProfileWidthMax) return {};
+  char buf[256];
+  std::snprintf(buf, sizeof buf, "%s profile %.1f mm wide: legal but implausible (usual %g-%g mm for a %s)",
+                kind_name(p.kind()), width * 1e3, lo * 1e3, kUsualProfileWidthMax * 1e3, wheel ? "wheel" : "rail");
+  return p.source() + ": " + buf;
+}
+
 std::string shipped_profile_names() {
   return "S1002 (wheel), UIC60 (rail, upright), UIC60_MBench (rail, canted 1/40), UIC60_true (rail, upright, CONTACT testbank)";
 }

@@ -58,6 +58,14 @@ class Profile {
   ParametricSpline spline_;
 };
 
+// Physics sanity: the usual lateral extent of a profile is 100-200 mm for a
+// wheel (S1002 130 mm) and 50-200 mm for a rail (the head of UIC60 74-81 mm,
+// a whole section to its 150 mm foot). Outside: a legal but implausible
+// profile (cut short, or another unit): a warning text naming the width, the
+// file and the usual range; empty when inside.
+inline constexpr double kUsualWheelWidthMin = 0.100, kUsualRailWidthMin = 0.050, kUsualProfileWidthMax = 0.200;
+std::string profile_width_warning(const Profile& profile);
+
 // Read a profile file (.prw/.prr SIMPACK/CONTACT format, or .csv/.txt two
 // columns) or a shipped name (see shipped_profile_names()).
 Profile read_profile(const std::string& path_or_name, ProfileKind kind, const ProfileReadOptions& options = {});

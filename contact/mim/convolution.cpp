@@ -6,7 +6,9 @@
 #include <algorithm>
 #include <cstring>
 #include <stdexcept>
+#include <string>
 
+#include "core/errors.hpp"
 #include "core/fftw_planner_lock.hpp"
 
 namespace railsim::contact::mim {
@@ -22,6 +24,7 @@ int fft_friendly_size(int target) {
 
 namespace {
 fftw_plan as_plan(void* p) { return static_cast<fftw_plan>(p); }
+std::string size_text(int n0, int n1) { return std::to_string(n0) + " x " + std::to_string(n1); }
 fftw_complex* as_fc(std::complex<double>* p) { return reinterpret_cast<fftw_complex*>(p); }
 }  // namespace
 
@@ -37,7 +40,8 @@ Convolution::Convolution(int mx, int my, int n_kernels, unsigned fftw_flags)
   c2_ = reinterpret_cast<std::complex<double>*>(fftw_alloc_complex(ncx));
   if (!rin_ || !rin2_ || !rout_ || !c1_ || !c2_) {
     release();
-    throw std::bad_alloc();
+    throw railsim::NumericalError("mim convolution: out of memory for the FFT work arrays of " + size_text(n0_, n1_) +
+                                  " points (grid " + size_text(mx, my) + "): use a coarser grid");
   }
   {
     // Plans first: FFTW_MEASURE overwrites the arrays while planning.
@@ -46,8 +50,11 @@ Convolution::Convolution(int mx, int my, int n_kernels, unsigned fftw_flags)
     plan_inv_ = fftw_plan_dft_c2r_2d(n0_, n1_, as_fc(c1_), rout_, fftw_flags);
   }
   if (!plan_fwd_ || !plan_inv_) {
+    const char* which = !plan_fwd_ ? "forward (r2c)" : "inverse (c2r)";
     release();
-    throw std::runtime_error("mim convolution: FFTW could not plan the transforms");
+    throw railsim::NumericalError(std::string("mim convolution: FFTW returned no plan (NULL) for the ") + which +
+                                  " 2-D transform of " + size_text(n0_, n1_) + " points, flags " +
+                                  std::to_string(fftw_flags) + " (out of memory, or FFTW_WISDOM_ONLY without wisdom)");
   }
   std::memset(rin_, 0, nr * sizeof(double));
   std::memset(rin2_, 0, nr * sizeof(double));
@@ -56,7 +63,8 @@ Convolution::Convolution(int mx, int my, int n_kernels, unsigned fftw_flags)
     k = reinterpret_cast<std::complex<double>*>(fftw_alloc_complex(ncx));
     if (!k) {
       release();
-      throw std::bad_alloc();
+      throw railsim::NumericalError("mim convolution: out of memory for " + std::to_string(n_kernels) +
+                                    " kernel spectra of " + size_text(n0_, nc_) + " points: use a coarser grid");
     }
     std::fill(k, k + ncx, std::complex<double>(0.0, 0.0));
   }

@@ -16,6 +16,7 @@
 #include <fstream>
 #include <mutex>
 
+#include "core/atomic_file.hpp"
 #include "core/errors.hpp"
 #include "engine/linearisation.hpp"
 #include "engine/rigid_body.hpp"
@@ -282,13 +283,7 @@ BifurcationResult collect(const std::vector<SweepResult>& rows, const Bifurcatio
 class StateStore {
  public:
   StateStore(const std::string& path, int n_states) : n_(n_states) {
-    std::string text;
-    {
-      std::ifstream in(path, std::ios::binary);
-      std::stringstream ss;
-      ss << in.rdbuf();
-      text = ss.str();
-    }
+    const std::string text = read_own_file(path);
     // Only complete lines count: a last line without its newline was torn by an
     // interruption (its last number may be cut short) and is ignored.
     std::size_t start = 0;
@@ -301,8 +296,8 @@ class StateStore {
       if (static_cast<int>(x.size()) == n_)
         states_[key] = Eigen::Map<const Eigen::VectorXd>(x.data(), static_cast<Eigen::Index>(x.size()));
     }
-    out_.open(path, std::ios::app);
-    if (start < text.size()) out_ << '\n';  // end the torn line so the next state starts a line of its own
+    out_.open(path);  // checked writes: a full disk is an error naming the file
+    if (start < text.size()) out_.write("\n");  // end the torn line so the next state starts a line of its own
   }
   void put(const std::string& key, const Eigen::VectorXd& x) {
     if (x.size() != n_) return;
@@ -314,7 +309,7 @@ class StateStore {
     }
     std::lock_guard<std::mutex> lock(mutex_);
     states_[key] = x;
-    out_ << line << '\n' << std::flush;
+    out_.write(line + '\n');
   }
   const Eigen::VectorXd* find(const std::string& key) const {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -326,7 +321,7 @@ class StateStore {
   int n_;
   mutable std::mutex mutex_;
   std::map<std::string, Eigen::VectorXd> states_;
-  std::ofstream out_;
+  AppendFile out_;
 };
 
 // Path following on the down branch, in two phases.

@@ -144,12 +144,15 @@ void parallel_for(std::size_t n, int workers, Fn fn) {
 }
 
 void write_ramp_record(const std::string& path, const RampingResult& r) {
-  const std::string tmp = temporary_path_for(path);
-  {
-    results::CsvWriter csv(tmp, {"time_s", "speed_kmh", "max_lateral_mm"}, false, 100000, 12);
-    for (std::size_t i = 0; i < r.time.size(); ++i) csv.row({r.time[i], r.speed[i] * kKmh, r.max_lateral[i] * 1e3});
-  }
-  fs::rename(tmp, path);
+  // The CSV text CsvWriter writes (12 significant digits), atomically and checked.
+  write_file_atomically(path, [&](std::ostream& f) {
+    f << "time_s,speed_kmh,max_lateral_mm\n";
+    char buf[96];
+    for (std::size_t i = 0; i < r.time.size(); ++i) {
+      std::snprintf(buf, sizeof buf, "%.12g,%.12g,%.12g\n", r.time[i], r.speed[i] * kKmh, r.max_lateral[i] * 1e3);
+      f << buf;
+    }
+  });
 }
 
 void read_ramp_record(const std::string& path, RampingResult& r) {

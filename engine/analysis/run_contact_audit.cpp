@@ -234,7 +234,7 @@ void write_contact_audit_csv(const RunContactAudit& a, const Model& model, const
       w.end_row();
     }
   }
-  w.flush();
+  w.close();
 }
 
 }  // namespace railsim::engine

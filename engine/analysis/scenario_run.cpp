@@ -17,6 +17,7 @@
 #include "engine/analysis/run_safety.hpp"
 #include "engine/analysis/safety_settings.hpp"
 #include "engine/analysis/track_zones.hpp"
+#include "engine/analysis/wheel_load_sanity.hpp"
 #include "engine/track_input.hpp"
 #include "results/chart.hpp"
 #include "results/csv_writer.hpp"
@@ -782,7 +783,7 @@ ScenarioRunResult run_scenario(const Scenario& sc, const ScenarioRunOptions& o) 
                   });
   } catch (const DerailmentError& e) {
     // Physics: the running safety up to the derailment, failed because of it.
-    if (csv) csv->flush();
+    if (csv) csv->close();
     summary.set("status", "derailed");
     summary.set("derailment", e.what());
     evaluate_history(sc, settings, history, summary, o.out_dir, e.what());  // up to the derailment: FAIL
@@ -796,14 +797,14 @@ ScenarioRunResult run_scenario(const Scenario& sc, const ScenarioRunOptions& o) 
     return out;
   } catch (const NumericalError& e) {
     // Numerics, not physics: no running-safety verdict.
-    if (csv) csv->flush();
+    if (csv) csv->close();
     summary.set("status", "failed");
     summary.set("error", e.what());
     summary.set("running_safety", "not evaluated: the run failed numerically");
     if (files) summary.write_file(o.out_dir + "/summary.json");
     throw;
   }
-  if (csv) csv->flush();
+  if (csv) csv->close();
   summary.set("status", "ok");
   summary.set("integrator", rs.integrator);
   results::Json st = results::Json::object();
@@ -838,6 +839,10 @@ ScenarioRunResult run_scenario(const Scenario& sc, const ScenarioRunOptions& o) 
   summary.set("max_lateral_shift_absolute_per_wheelset", maxa);
   results::Json warn = results::Json::array();
   for (const std::string& w : sc.warnings) warn.push(w);  // legal but implausible inputs (scenario reader)
+  for (const std::string& w : wheel_load_warnings(history)) {  // legal but implausible results
+    spdlog::warn("{}", w);
+    warn.push(w);
+  }
   if (rs.invalid_contact_calls > 0)
     warn.push("contact model used outside its validity domain in " + std::to_string(rs.invalid_contact_calls) +
               " evaluations (first: " + rs.first_invalid_reason + ")");

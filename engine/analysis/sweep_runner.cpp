@@ -94,9 +94,7 @@ bool parse_line(const std::string& line, std::size_t n_values, SweepResult& out)
 }
 
 void read_file_into(const std::string& path, std::size_t n_values, std::map<long, SweepResult>& found) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return;
-  std::string content((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string content = read_own_file(path);
   std::size_t start = 0;
   while (start < content.size()) {
     const std::size_t nl = content.find('\n', start);
@@ -170,16 +168,12 @@ std::vector<SweepResult> run_sweep(const std::vector<SweepPoint>& points, const 
                  points.size());
 
   const std::string part = o.output + ".part" + std::to_string(mpi.rank);
-  std::FILE* part_file = std::fopen(part.c_str(), "ab");
-  if (!part_file) throw InputError(part + ": cannot open for writing");
+  AppendFile part_file(part);
   {
     // A torn last line (killed mid-write) is closed off so that it stays a
     // single unreadable line instead of swallowing the next result.
-    std::ifstream probe(part, std::ios::binary | std::ios::ate);
-    if (probe && probe.tellg() > 0) {
-      probe.seekg(-1, std::ios::end);
-      if (probe.get() != '\n') std::fputc('\n', part_file);
-    }
+    const std::string old = read_own_file(part);
+    if (!old.empty() && old.back() != '\n') part_file.write("\n");
   }
   std::mutex write_mutex;
   std::atomic<std::size_t> next{0}, finished{0}, running{0};
@@ -210,9 +204,12 @@ std::vector<SweepResult> run_sweep(const std::vector<SweepPoint>& points, const 
       }
       --running;
       std::lock_guard<std::mutex> lock(write_mutex);
-      const std::string line = result_line(r) + "\n";
-      std::fwrite(line.data(), 1, line.size(), part_file);
-      std::fflush(part_file);
+      try {
+        part_file.write(result_line(r) + "\n");  // a full disk stops the sweep naming the file
+      } catch (...) {
+        if (!first_error) first_error = std::current_exception();
+        return;
+      }
       const std::size_t n_done = ++finished;
       const auto now = std::chrono::steady_clock::now();
       if (std::chrono::duration<double>(now - last_report).count() >= o.progress_interval_s ||
@@ -234,7 +231,11 @@ std::vector<SweepResult> run_sweep(const std::vector<SweepPoint>& points, const 
   for (int t = 1; t < n_threads; ++t) pool.emplace_back(worker);
   worker();
   for (auto& th : pool) th.join();
-  std::fclose(part_file);
+  try {
+    part_file.close();
+  } catch (...) {
+    if (!first_error) first_error = std::current_exception();
+  }
 
 #ifdef RAILSIM_HAVE_MPI
   if (mpi.active) MPI_Barrier(MPI_COMM_WORLD);

@@ -208,23 +208,45 @@ def render(path):
         fig = multiples(spec)
     else:
         fig = single(spec)
-    if getattr(fig, "railsim_tight", False):
-        fig.savefig(spec["output"], bbox_inches="tight")
-    else:
-        fig.savefig(spec["output"])
+    kw = {"bbox_inches": "tight"} if getattr(fig, "railsim_tight", False) else {}
+    save(fig, spec["output"], kw)
     plt.close(fig)
 
 
+class WriteError(Exception):
+    """The PNG could not be written (disk full, no permission): exit status 3."""
+
+
+def save(fig, out, kw):
+    # Through a temporary name and a rename, so that a reader never sees half a
+    # PNG; a device or pipe (e.g. /dev/full) is written in place.
+    in_place = os.path.exists(out) and not os.path.isfile(out)
+    target = out if in_place else f"{out}.tmp.{os.getpid()}"
+    try:
+        fig.savefig(target, format="png", **kw)
+        if not in_place:
+            os.replace(target, out)
+    except OSError as e:
+        if not in_place and os.path.isfile(target):
+            os.remove(target)
+        raise WriteError(f"{out}: write failed ({e.strerror or e})") from e
+
+
 def main(paths):
-    """Render every chart description given (one process for several charts)."""
-    failed = 0
+    """Render every chart description given (one process for several charts).
+    Exit status 0: all rendered; 3: a PNG could not be written (each such file
+    named on a line "PATH: write failed (reason)"); 1: other failures."""
+    failed = write_failed = 0
     for path in paths:
         try:
             render(path)
+        except WriteError as e:
+            print(f"render_chart.py: {e}", file=sys.stderr)
+            write_failed += 1
         except Exception as e:  # one bad chart must not cost the others
             print(f"render_chart.py: {path}: {e}", file=sys.stderr)
             failed += 1
-    return 1 if failed else 0
+    return 3 if write_failed else 1 if failed else 0
 
 
 if __name__ == "__main__":

@@ -65,7 +65,19 @@ TEST_CASE("railsim on bad scenario files: exit 2 naming file, line, key and rang
       {"a long junk line", "run " + bad("junk_long_line.yaml") + out, {"junk_long_line.yaml:1: expected a mapping"}},
       {"--speed-kmh nan", "run '" + test::source_path("scenarios/single_wheelset.yaml") + "' --speed-kmh nan" + out,
        {"--speed-kmh: expected a finite number (got 'nan')"}},
+      {"initial shift 0.5 m", "run " + bad("scenario_initial_lateral_huge.yaml") + out,
+       {"scenario_initial_lateral_huge.yaml:10: key 'initial.ws1.lateral'", "[-0.05, 0.05] m", "got 0.5"}},
+      {"initial yaw 2 rad", "run " + bad("scenario_initial_yaw_huge.yaml") + out,
+       {"scenario_initial_yaw_huge.yaml:10: key 'initial.ws1.yaw'", "[-0.1, 0.1] rad", "got 2"}},
+      {"rtol 1e-15", "run " + bad("scenario_rtol_tiny.yaml") + out,
+       {"scenario_rtol_tiny.yaml:10: key 'integrator.rtol'", "[1e-12, 0.1]", "got 1e-15"}},
   });
+  // A legal setting the integrator cannot work with: exit 3 naming the setting, its value and what to change.
+  const auto r = test::run_railsim("run " + bad("scenario_max_steps_one.yaml") + out);
+  INFO(r.output);
+  CHECK(r.exit_code == 3);
+  CHECK(r.output.find("raise integrator.max_steps (now 1, default 100000)") != std::string::npos);
+  CHECK(r.output.find("place: track distance 0.00-0.40 m") != std::string::npos);
 }
 
 TEST_CASE("railsim contact on bad case files: exit 2 naming file, line, key and range; mu > 1 a warning",

@@ -233,3 +233,33 @@ TEST_CASE("MIM table cache - a corrupt cached file is rebuilt and an interrupted
   CHECK(log.front().find("rebuilding") != std::string::npos);
   CHECK(c->node(0, 2, 1, 3)[0] == Approx(a->node(0, 2, 1, 3)[0]).margin(1e-12));
 }
+
+TEST_CASE("MIM table on a full disk: the build log and the table file name the file, exit-2 errors",
+          "[mim_table][write]") {
+  if (!std::filesystem::is_character_file("/dev/full")) return;
+  MimTableSpec spec;
+  spec.aob = {1.0};
+  spec.uxi = lin(0.0, 0.75, 2);
+  spec.ueta = lin(0.0, 0.75, 2);
+  spec.vpsi = lin(-0.75, 0.75, 2);
+  spec.grid = 6;
+  const auto message = [](auto f) {
+    try {
+      f();
+    } catch (const railsim::InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  // The resume log of the build (written before the first solve).
+  const std::string log = message([&] { MimTable::build(spec, "/dev/full", {}); });
+  CHECK(log.find("/dev/full: write failed (No space left on device)") != std::string::npos);
+  // The finished table: saved through the checked atomic write.
+  const auto t = MimTable::build(spec, "", {});
+  REQUIRE(t != nullptr);
+  const std::string dir = railsim::test::temp_dir("mim_table_full");
+  std::filesystem::create_symlink("/dev/full", dir + "/t.bin");
+  const std::string saved = message([&] { t->save(dir + "/t.bin"); });
+  CHECK(saved.find("mim_table: " + dir + "/t.bin: write failed (No space left on device)") != std::string::npos);
+  CHECK(std::filesystem::is_character_file("/dev/full"));
+}

@@ -80,3 +80,35 @@ TEST_CASE("Bad profiles give InputError with file and line", "[geometry][profile
   CHECK(read_profile(test::data_path("contact_geometry/no_units.csv"), ProfileKind::rail, o).y().front() ==
         Approx(-0.030));
 }
+
+TEST_CASE("profile widths outside the usual range give a warning naming the width and the range",
+          "[geometry][profile][sanity]") {
+  // Shipped profiles are inside (S1002 130 mm, UIC60 74-81 mm).
+  CHECK(profile_width_warning(read_profile("S1002", ProfileKind::wheel)).empty());
+  for (const char* rail : {"UIC60", "UIC60_MBench", "UIC60_true"})
+    CHECK(profile_width_warning(read_profile(rail, ProfileKind::rail)).empty());
+  const auto made = [](ProfileKind kind, double width) {
+    std::vector<double> y, z;
+    for (int i = 0; i <= 40; ++i) {
+      y.push_back(-0.5 * width + width * i / 40.0);
+      z.push_back(0.002 * std::pow(2.0 * y.back() / width, 2));
+    }
+    return Profile(kind, "made.csv", y, z);
+  };
+  // Inside, at the bounds and outside, wheels and rails (both sides of each range).
+  CHECK(profile_width_warning(made(ProfileKind::wheel, 0.130)).empty());
+  CHECK(profile_width_warning(made(ProfileKind::wheel, 0.1001)).empty());
+  CHECK(profile_width_warning(made(ProfileKind::wheel, 0.1999)).empty());
+  CHECK(profile_width_warning(made(ProfileKind::rail, 0.074)).empty());
+  CHECK(profile_width_warning(made(ProfileKind::rail, 0.0501)).empty());
+  CHECK_THAT(profile_width_warning(made(ProfileKind::wheel, 0.060)),
+             Catch::Contains("made.csv: wheel profile 60.0 mm wide") && Catch::Contains("usual 100-200 mm"));
+  CHECK_THAT(profile_width_warning(made(ProfileKind::wheel, 0.250)), Catch::Contains("250.0 mm wide"));
+  CHECK_THAT(profile_width_warning(made(ProfileKind::rail, 0.030)),
+             Catch::Contains("rail profile 30.0 mm wide") && Catch::Contains("usual 50-200 mm"));
+  CHECK_THAT(profile_width_warning(made(ProfileKind::rail, 0.250)), Catch::Contains("usual 50-200 mm"));
+  // The corpus file: a wheel cut to 60 mm.
+  const std::string narrow = test::data_path("bad_input/profile_wheel_narrow.csv");
+  CHECK_THAT(profile_width_warning(read_profile(narrow, ProfileKind::wheel)),
+             Catch::Contains(narrow + ": wheel profile 60.0 mm wide"));
+}

@@ -1,15 +1,21 @@
 // Tests of contact/mim/influence.cpp and convolution.cpp: element integrals
-// against numerical quadrature, and the FFT product against a direct sum.
+// against numerical quadrature, and the FFT product against a direct sum;
+// an FFTW plan that cannot be made is a NumericalError.
 #include <catch2/catch.hpp>
+#include <fftw3.h>
 
 #include <cmath>
+#include <mutex>
 #include <numbers>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "contact/mim/convolution.hpp"
 #include "contact/mim/influence.hpp"
 #include "contact/mim/influence_operator.hpp"
+#include "core/errors.hpp"
+#include "core/fftw_planner_lock.hpp"
 
 using namespace railsim::contact::mim;
 
@@ -108,4 +114,24 @@ TEST_CASE("rolling operator is the x-difference of the shift operator", "[mim][i
     const double expect_y = 1e6 * (influence_xy(m, X, Y, g.dx, g.dy) - influence_xy(m, X + g.dx, Y, g.dx, g.dy)) / g.dx;
     CHECK(vy[g.index(i, 3)] == Approx(expect_y).margin(1e-9 * std::abs(expect)));
   }
+}
+
+TEST_CASE("an FFTW plan that cannot be made is a NumericalError naming the transform, not a crash",
+          "[mim][convolution][bad_input]") {
+  // FFTW_WISDOM_ONLY: FFTW returns no plan (NULL) when it holds no wisdom for the size.
+  {
+    std::lock_guard<std::mutex> lock(railsim::fftw_planner_mutex());
+    fftw_forget_wisdom();
+  }
+  std::string msg;
+  try {
+    Convolution conv(37, 23, 1, FFTW_ESTIMATE | FFTW_WISDOM_ONLY);
+  } catch (const railsim::NumericalError& e) {
+    msg = e.what();
+  }
+  INFO(msg);
+  CHECK(msg.find("mim convolution: FFTW returned no plan (NULL) for the forward (r2c) 2-D transform of ") == 0);
+  CHECK(msg.find(" points, flags ") != std::string::npos);
+  // Planning normally afterwards works (nothing left half made).
+  CHECK_NOTHROW(Convolution(37, 23, 1, FFTW_ESTIMATE));
 }

@@ -60,3 +60,70 @@ TEST_CASE("write_file_atomically: concurrent writers never leave a torn file", "
   const std::string got = railsim::test::read_text(path);
   CHECK((got == a || got == b));
 }
+
+namespace {
+// The message of the InputError `f` throws ("" when it throws none).
+template <class F>
+std::string input_error_of(F f) {
+  try {
+    f();
+  } catch (const railsim::InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+bool has(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+}  // namespace
+
+TEST_CASE("checked writes: a full disk (/dev/full) is an error naming the file, the device stays",
+          "[core][atomic_file][write]") {
+  // /dev/full accepts the open and fails every write with ENOSPC (Linux).
+  if (!fs::is_character_file("/dev/full")) return;
+  const std::string m = input_error_of([] { railsim::write_file_atomically("/dev/full", std::string("x")); });
+  INFO(m);
+  CHECK(has(m, "/dev/full: write failed (No space left on device)"));
+  CHECK(has(m, "disk is full"));
+  // Written in place: no temporary beside it in /dev, and the device is not replaced.
+  CHECK(fs::is_character_file("/dev/full"));
+  for (const auto& e : fs::directory_iterator("/dev")) CHECK(e.path().string().rfind("/dev/full.tmp.", 0) != 0);
+  // Through a link in an output folder (how the program's tests fill a disk).
+  const std::string dir = railsim::test::temp_dir("atomic_file_full");
+  fs::create_symlink("/dev/full", dir + "/summary.json");
+  const std::string l = input_error_of([&] {
+    railsim::write_file_atomically(dir + "/summary.json", [](std::ostream& o) { o << std::string(100000, 'y'); });
+  });
+  CHECK(has(l, dir + "/summary.json: write failed (No space left on device)"));
+  CHECK(fs::is_symlink(dir + "/summary.json"));
+  // A log (resume records, states) on a full disk.
+  railsim::AppendFile log(dir + "/summary.json");
+  CHECK(has(input_error_of([&] { log.write("1,key,2\n"); }), dir + "/summary.json: write failed"));
+  CHECK_NOTHROW(log.close());
+  // Nothing read back from a device: a resume file that is one reads as empty (not forever).
+  CHECK(railsim::read_own_file(dir + "/summary.json").empty());
+  CHECK(railsim::read_own_file("/dev/zero").empty());
+}
+
+TEST_CASE("checked writes: unwritable places name the file and the reason", "[core][atomic_file][write]") {
+  const std::string dir = railsim::test::temp_dir("atomic_file_place");
+  railsim::write_file_atomically(dir + "/plain", std::string("x"));
+  // A folder where a file is expected, a file where a folder is expected.
+  CHECK(has(input_error_of([&] { railsim::write_file_atomically(dir, std::string("x")); }), dir + ": is a folder"));
+  const std::string under = dir + "/plain/f.txt";
+  const std::string m = input_error_of([&] { railsim::write_file_atomically(under, std::string("x")); });
+  CHECK(has(m, under + ": cannot create the temporary file"));
+  CHECK(has(m, "(Not a directory)"));
+  CHECK(has(input_error_of([&] { railsim::AppendFile f(under); }), under + ": cannot open for writing (Not a directory)"));
+  // Append and truncate modes; records reach the file at once (no buffer).
+  railsim::AppendFile log(dir + "/log");
+  log.write("a\n");
+  CHECK(railsim::test::read_text(dir + "/log") == "a\n");
+  log.close();
+  railsim::AppendFile again(dir + "/log");
+  again.write("b\n");
+  CHECK(railsim::test::read_text(dir + "/log") == "a\nb\n");
+  railsim::AppendFile fresh(dir + "/log", railsim::AppendFile::Mode::truncate);
+  fresh.write("c\n");
+  CHECK(railsim::test::read_text(dir + "/log") == "c\n");
+  CHECK(railsim::read_own_file(dir + "/log") == "c\n");
+  CHECK(railsim::read_own_file(dir + "/missing").empty());
+}

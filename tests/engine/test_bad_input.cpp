@@ -90,6 +90,10 @@ TEST_CASE("bad scenarios: refused naming file, line, key and the allowed range",
           // The error is in the file the scenario names: that file, line and key.
           {"vehicle_self_spring.yaml", {":6: key 'elements[0].other'", "to itself"}},
           {"table_negative_c11.dat", {":5: column 8 (C11 [-])", "expected a number in (0, 100]", "got -5"}},
+          {"scenario_initial_lateral_huge.yaml",
+           {":10: key 'initial.ws1.lateral'", "expected a deviation in [-0.05, 0.05] m", "lateral range", "got 0.5"}},
+          {"scenario_initial_yaw_huge.yaml", {":10: key 'initial.ws1.yaw'", "[-0.1, 0.1] rad", "got 2"}},
+          {"scenario_rtol_tiny.yaml", {":10: key 'integrator.rtol'", "expected a number in [1e-12, 0.1]", "got 1e-15"}},
           {"deep_nesting.yaml", {":2: YAML nested too deeply"}},
           {"junk_long_line.yaml", {":1: expected a mapping (got xxxx", "...)"}},
       },
@@ -181,5 +185,62 @@ TEST_CASE("a setting SUNDIALS refuses is an input error naming the call and the 
     CHECK(msg.find("integrator set-up: ") == 0);
     CHECK(msg.find("SetMinStep (min_step 0.01") != std::string::npos);
     CHECK(msg.find("_ILL_INPUT (flag -22)") != std::string::npos);
+  }
+}
+
+namespace {
+std::string numerical_error(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const NumericalError& e) {
+    return e.what();
+  }
+  return "(no NumericalError)";
+}
+}  // namespace
+
+TEST_CASE("integrator failures name time, place, model and the last step, and say what to change",
+          "[engine][bad_input]") {
+  // max_steps 1 (corpus): CVODE stops at once; the message names the setting and its value.
+  {
+    const engine::Scenario sc = engine::load_scenario(bad("scenario_max_steps_one.yaml"));
+    const std::string msg = numerical_error([&] { engine::simulate(sc.model, sc.integrator, sc.x0, sc.duration,
+                                                                   sc.output_interval); });
+    INFO(msg);
+    CHECK(msg.find("t = ") == 0);
+    CHECK(msg.find("cvode_bdf") != std::string::npos);
+    CHECK(msg.find("CV_TOO_MUCH_WORK (flag -1)") != std::string::npos);
+    CHECK(msg.find("raise integrator.max_steps (now 1, default 100000)") != std::string::npos);
+    CHECK(msg.find("(last step ") != std::string::npos);
+    CHECK(msg.find("place: track distance 0.00-0.40 m (t = 0-0.01 s)") != std::string::npos);
+    CHECK(msg.find("model: lateral wheelset, contact coefficients") != std::string::npos);
+    CHECK(msg.find("stiff for an explicit") == std::string::npos);  // an implicit method: not blamed on stiffness
+  }
+  // min_step 1 ms on the shipped wheelset's 10 mm defect: the step cannot shrink.
+  {
+    const engine::Scenario sc = engine::load_scenario(test::source_path("scenarios/single_wheelset.yaml"));
+    engine::IntegratorOptions o = sc.integrator;
+    o.min_step = 1e-3;
+    const std::string msg = numerical_error([&] { engine::simulate(sc.model, o, sc.x0, sc.duration,
+                                                                   sc.output_interval); });
+    INFO(msg);
+    CHECK(msg.find("CV_ERR_FAILURE (flag -3)") != std::string::npos);
+    CHECK(msg.find("could not shrink below integrator.min_step (now 0.001 s): lower min_step or omit it") !=
+          std::string::npos);
+    CHECK(msg.find("place: track distance ") != std::string::npos);
+  }
+  // An explicit method out of steps: the setting first, then the stiffness hint.
+  {
+    const engine::Scenario sc = engine::load_scenario(bad("scenario_max_steps_one.yaml"));
+    for (const std::string method : {"arkode_erk", "odeint_dopri5"}) {
+      engine::IntegratorOptions o = sc.integrator;
+      o.method = method;
+      const std::string msg = numerical_error([&] { engine::simulate(sc.model, o, sc.x0, sc.duration,
+                                                                     sc.output_interval); });
+      INFO(method << ": " << msg);
+      CHECK(msg.find("raise integrator.max_steps (now 1, default 100000)") != std::string::npos);
+      CHECK(msg.find("use cvode_bdf or arkode_dirk") != std::string::npos);
+      CHECK(msg.find("place: track distance") != std::string::npos);
+    }
   }
 }

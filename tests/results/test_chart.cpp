@@ -6,6 +6,7 @@
 #include <iterator>
 #include <string>
 
+#include "core/errors.hpp"
 #include "results/chart.hpp"
 #include "json_support.hpp"
 #include "test_support.hpp"
@@ -53,4 +54,37 @@ TEST_CASE("a chart with panels renders small multiples", "[results][chart]") {
   CHECK(spec["series"].size() == 6);
   CHECK(spec["series"][5]["panel"] == 2);
   CHECK(spec["series"][1]["y"][0].get<double>() == 2.0);
+}
+
+TEST_CASE("a PNG that cannot be written (full disk) is an error naming the file, not a warning",
+          "[results][chart][write]") {
+  if (!std::filesystem::is_character_file("/dev/full")) return;
+  const std::string dir = railsim::test::temp_dir("chart_full");
+  Chart c;
+  c.title = "t";
+  c.series.push_back({"s", {1, 2}, {1, 2}, "line", ""});
+  // The PNG on a full device (a link to /dev/full); the description beside it is written.
+  std::filesystem::create_symlink("/dev/full", dir + "/full.png");
+  Chart other = c;
+  std::string m;
+  try {
+    draw_all({{&other, dir + "/ok.png"}, {&c, dir + "/full.png"}});
+  } catch (const railsim::InputError& e) {
+    m = e.what();
+  }
+  INFO(m);
+  CHECK(m.find(dir + "/full.png: write failed (No space left on device)") != std::string::npos);
+  CHECK(std::filesystem::is_character_file("/dev/full"));
+  CHECK(std::filesystem::file_size(dir + "/ok.png") > 1000);  // the other chart was rendered
+  for (const auto& e : std::filesystem::directory_iterator(dir))  // no temporary left behind
+    CHECK(e.path().filename().string().find(".tmp.") == std::string::npos);
+  // The description on a full device.
+  std::filesystem::create_symlink("/dev/full", dir + "/d.png.json");
+  m.clear();
+  try {
+    draw(c, dir + "/d.png");
+  } catch (const railsim::InputError& e) {
+    m = e.what();
+  }
+  CHECK(m.find(dir + "/d.png.json: write failed (No space left on device)") != std::string::npos);
 }
