@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <map>
 #include <vector>
 
@@ -248,6 +249,36 @@ double InputNode::number_or(std::string_view key, double fallback) const {
 std::string InputNode::string_or(std::string_view key, const std::string& fallback) const {
   auto c = find(key);
   return c ? c->as_string() : fallback;
+}
+
+std::string InputNode::as_choice(std::initializer_list<std::string_view> choices) const {
+  const std::string v = as_string();
+  std::string list;
+  std::size_t i = 0;
+  for (const auto c : choices) {
+    if (v == c) return v;
+    list += (i == 0 ? "" : (i + 1 == choices.size() ? " or " : ", ")) + ("'" + std::string(c) + "'");
+    ++i;
+  }
+  fail("expected " + list + " (got '" + v + "')");
+}
+
+std::string InputNode::choice_or(std::string_view key, const std::string& fallback,
+                                 std::initializer_list<std::string_view> choices) const {
+  auto c = find(key);
+  return c ? c->as_choice(choices) : fallback;
+}
+
+std::string InputNode::as_existing_file(const std::string& base_dir) const {
+  const std::string v = as_string();
+  std::string path = v;
+  if (!v.empty() && !std::filesystem::path(v).is_absolute() && !base_dir.empty())
+    path = (std::filesystem::path(base_dir) / v).lexically_normal().string();
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    fail("file '" + v + "' not found" +
+         (path != v ? " (looked for " + path + ", relative to the folder of " + file_ + ")" : std::string()));
+  return path;
 }
 
 }  // namespace railsim::config

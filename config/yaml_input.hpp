@@ -71,6 +71,14 @@ class InputNode {
   std::string string(std::string_view key) const { return at(key).as_string(); }
   double number_or(std::string_view key, double fallback) const;
   std::string string_or(std::string_view key, const std::string& fallback) const;
+  // One of `choices` (fails with "expected 'a', 'b' or 'c' (got 'x')").
+  std::string as_choice(std::initializer_list<std::string_view> choices) const;
+  std::string choice_or(std::string_view key, const std::string& fallback,
+                        std::initializer_list<std::string_view> choices) const;
+  // The scalar as the path of an existing regular file, relative paths taken
+  // from `base_dir` (the folder of the file being read); fails naming the
+  // value and the path looked for.
+  std::string as_existing_file(const std::string& base_dir) const;
 
   // --- reporting ---------------------------------------------------------------
   // "file:line" of this node.

@@ -51,6 +51,7 @@
 #include "config/yaml_input.hpp"
 #include "contact/geometry/wheel_rail_geometry.hpp"
 #include "contact/reduction.hpp"
+#include "engine/geometry_registry.hpp"
 #include "engine/integrator.hpp"
 #include "engine/model.hpp"
 
@@ -115,10 +116,6 @@ struct Scenario {
 };
 
 Scenario load_scenario(const std::string& path);
-// Track set-up of a wheel-rail pair from a YAML map (inclination, default 1/40;
-// gauge, gauge_depth, flange_back, back_face; the wheel radius under
-// `radius_key`), each checked against its admissible range.
-contact::TrackSetup read_track_setup(const config::InputNode& node, const std::string& radius_key);
 Scenario load_scenario(const config::InputNode& root, const std::string& base_dir);
 
 // Use `spec` as the scenario's reduction factors: presets and numbers as given;

@@ -278,6 +278,11 @@ std::string shipped_profile_names() {
   return "S1002 (wheel), UIC60 (rail, upright), UIC60_MBench (rail, canted 1/40), UIC60_true (rail, upright, CONTACT testbank)";
 }
 
+bool is_shipped_profile_name(const std::string& name) {
+  const std::string l = lower(name);
+  return l == "s1002" || l == "uic60" || l == "uic60_mbench" || l == "uic60_true";
+}
+
 Profile read_profile(const std::string& path_or_name, ProfileKind kind, const ProfileReadOptions& options) {
   std::string path = path_or_name;
   const std::string lname = lower(path_or_name);

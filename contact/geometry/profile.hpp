@@ -77,6 +77,8 @@ Profile read_profile(const std::string& path_or_name, ProfileKind kind, const Pr
 // shipped_profile_names() and the folder that holds them
 // ($RAILSIM_PROFILE_DIR, else profiles/ in the data folder, core/data_dir.hpp).
 std::string shipped_profile_names();
+// Whether `name` (any case) is one of the shipped names above.
+bool is_shipped_profile_name(const std::string& name);
 std::string shipped_profile_dir();
 
 }  // namespace railsim::contact

@@ -1,6 +1,9 @@
 // Checked YAML input: every error names file, line and key and the allowed range.
 #include <catch2/catch.hpp>
 
+#include <filesystem>
+#include <fstream>
+
 #include "config/yaml_input.hpp"
 
 using railsim::InputError;
@@ -69,4 +72,29 @@ TEST_CASE("messages quote at most one shortened line of the input", "[config]") 
   const std::string root = error_of([&] { InputNode::load_string(junk, "j.yaml").at("k"); });
   CHECK(root.size() < 200);
   CHECK(root.find("...") != std::string::npos);
+}
+
+TEST_CASE("choices: one of a list, the list and the value in the message", "[config]") {
+  const auto doc = InputNode::load_string("model: lateral\nroll: kinematc\n", "s.yaml");
+  CHECK(doc.at("model").as_choice({"lateral", "full"}) == "lateral");
+  CHECK(doc.choice_or("start", "equilibrium", {"equilibrium", "nominal"}) == "equilibrium");
+  CHECK(error_of([&] { doc.choice_or("roll", "none", {"kinematic", "none"}); }) ==
+        "s.yaml:2: key 'roll': expected 'kinematic' or 'none' (got 'kinematc')");
+  CHECK(error_of([&] { doc.at("model").as_choice({"a", "b", "c"}); }) ==
+        "s.yaml:1: key 'model': expected 'a', 'b' or 'c' (got 'lateral')");
+}
+
+TEST_CASE("a file named in YAML resolves against the reader's folder or names where it looked", "[config]") {
+  const std::string dir = std::filesystem::temp_directory_path().string() + "/railsim_yaml_file_test";
+  std::filesystem::create_directories(dir);
+  { std::ofstream(dir + "/t.yaml") << "x: 1\n"; }
+  const auto doc = InputNode::load_string("track: t.yaml\nabs: " + dir + "/t.yaml\nmissing: no.yaml\ndir: .\n",
+                                          dir + "/s.yaml");
+  CHECK(doc.at("track").as_existing_file(dir) == dir + "/t.yaml");
+  CHECK(doc.at("abs").as_existing_file("/elsewhere") == dir + "/t.yaml");
+  const std::string m = error_of([&] { doc.at("missing").as_existing_file(dir); });
+  CHECK(m.find("s.yaml:3: key 'missing': file 'no.yaml' not found (looked for " + dir + "/no.yaml") != std::string::npos);
+  // A folder is not a file.
+  CHECK(error_of([&] { doc.at("dir").as_existing_file(dir); }).find("key 'dir': file '.' not found") !=
+        std::string::npos);
 }
