@@ -23,7 +23,7 @@
 #include "engine/analysis/critical_speed.hpp"
 #include "engine/analysis/mode_sweep.hpp"
 #include "engine/linearisation.hpp"
-#include "engine/scenario.hpp"
+#include "engine/io/scenario.hpp"
 #include "results/chart.hpp"
 #include "results/csv_writer.hpp"
 #include "results/json_writer.hpp"

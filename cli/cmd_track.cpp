@@ -3,7 +3,7 @@
 // Columns (SI unless the name says mm): s, x, y, heading, curvature,
 // dcurvature, cant_mm, cant_angle, dcant_angle, the four irregularity channels
 // and the left/right rail positions in mm, their slopes (d/ds, dimensionless),
-// and with --speed-kmh the cant deficiency in mm. Signs: tracks/track.hpp.
+// and with --speed-kmh the cant deficiency in mm. Signs: track/track.hpp.
 #include <spdlog/spdlog.h>
 
 #include <array>
@@ -18,7 +18,7 @@
 #include "config/yaml_input.hpp"
 #include "core/errors.hpp"
 #include "results/csv_writer.hpp"
-#include "tracks/track_file.hpp"
+#include "track/track_file.hpp"
 
 namespace railsim::cli {
 
@@ -34,7 +34,7 @@ struct TrackOptions {
 
 int run_track(const TrackOptions& o) {
   using config::format_number;
-  const tracks::Track track = tracks::load_track(o.track_file);
+  const track::Track track = track::load_track(o.track_file);
   const double s0 = o.from.value_or(0.0);
   const double s1 = o.to.value_or(track.length());
   if (!(o.step > 0.0) || !std::isfinite(o.step))
@@ -64,11 +64,11 @@ int run_track(const TrackOptions& o) {
                                    "cross_level_slope", "gauge_slope"};
   if (o.speed_kmh) cols.push_back("cant_deficiency_mm");
   results::CsvWriter csv(o.out, cols, false, 100000);
-  std::array<double, tracks::kChannelCount> maxabs{}, sumsq{};
+  std::array<double, track::kChannelCount> maxabs{}, sumsq{};
   std::vector<double> row(cols.size());
   for (long j = 0; j < n; ++j) {
     const double s = std::min(s0 + static_cast<double>(j) * o.step, s1);
-    const tracks::TrackState t = track.at(s);
+    const track::TrackState t = track.at(s);
     const auto& irr = t.irregularity;
     std::size_t k = 0;
     for (double v : {s, t.x, t.y, t.heading, t.curvature, t.dcurvature, t.cant * 1e3, t.cant_angle, t.dcant_angle,
@@ -78,7 +78,7 @@ int run_track(const TrackOptions& o) {
       row[k++] = v;
     if (o.speed_kmh) row[k++] = track.cant_deficiency(s, *o.speed_kmh / 3.6) * 1e3;
     csv.row(row);
-    for (int c = 0; c < tracks::kChannelCount; ++c) {
+    for (int c = 0; c < track::kChannelCount; ++c) {
       maxabs[static_cast<std::size_t>(c)] = std::max(maxabs[static_cast<std::size_t>(c)], std::abs(irr.value[static_cast<std::size_t>(c)]));
       sumsq[static_cast<std::size_t>(c)] += irr.value[static_cast<std::size_t>(c)] * irr.value[static_cast<std::size_t>(c)];
     }
@@ -87,9 +87,9 @@ int run_track(const TrackOptions& o) {
   std::printf("track %s: %.3f m, %d segments, %zu irregularity components\n", track.name().c_str(), track.length(),
               track.alignment().segment_count(), track.irregularities().components().size());
   std::printf("sampled s = %.6g .. %.6g m every %.6g m: %ld rows -> %s\n", s0, s1, o.step, n, o.out.c_str());
-  for (tracks::Channel c : tracks::kAllChannels) {
-    const auto i = static_cast<std::size_t>(tracks::index(c));
-    std::printf("  %-12s max |r| = %8.3f mm   rms = %8.3f mm\n", tracks::channel_name(c), maxabs[i] * 1e3,
+  for (track::Channel c : track::kAllChannels) {
+    const auto i = static_cast<std::size_t>(track::index(c));
+    std::printf("  %-12s max |r| = %8.3f mm   rms = %8.3f mm\n", track::channel_name(c), maxabs[i] * 1e3,
                 std::sqrt(sumsq[i] / static_cast<double>(n)) * 1e3);
   }
   return kExitSuccess;

@@ -19,7 +19,7 @@
 #include "core/atomic_file.hpp"
 #include "core/errors.hpp"
 #include "engine/linearisation.hpp"
-#include "engine/rigid_body.hpp"
+#include "engine/elements/rigid_body.hpp"
 #include "engine/simulation.hpp"
 #include "results/limit_cycle.hpp"
 
