@@ -20,6 +20,7 @@
 #include "engine/elements/rigid_body.hpp"
 #include "engine/elements/spring_damper.hpp"
 #include "engine/track_frame.hpp"
+#include "engine/wheel_rail/strip_patches.hpp"
 #include "engine/wheel_rail/wheel_rail_coupling.hpp"
 #include "engine/elements/yaw_damper.hpp"
 
@@ -75,6 +76,11 @@ struct Model {
   // M_y, as in the full model: the axle rolls freely, sum Fx r ~ 0. The full
   // model always has it.
   bool free_axle_rotation = false;
+  // Distributed contact (profiles geometry): the ellipse each patch hands to
+  // the tangential models, Hertz's for the patch's curvatures or the
+  // semi-Hertzian patch's area and length (wheel_rail/strip_patches.hpp;
+  // scenario key contact.normal: hertz | semi_hertz).
+  PatchShape patch_shape = PatchShape::hertz;
   int n_states = 0;
   std::vector<std::string> state_names;
   bool finalized = false;

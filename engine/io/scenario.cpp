@@ -146,6 +146,7 @@ struct ContactSection {
   std::shared_ptr<const ContactGeometry> geometry;
   bool hertz = false;           // conical wheels with curvatures: patch from Hertz at the static load
   double static_approach = 7e-5;
+  PatchShape patch_shape = PatchShape::hertz;
   contact::ReductionSpec reduction;
   std::string reduction_where;
 };
@@ -169,14 +170,22 @@ contact::Material read_material(const InputNode& mat, CouplingOptions& co, std::
 // Step: the contact section (geometry by registry, tangential model, material,
 // reductions, creep coefficients or patch).
 ContactSection read_contact(const InputNode& c, const std::string& base, Scenario& sc) {
-  c.allow_only({"geometry", "tangential", "saturation", "material", "reduction", "creep_coefficients", "patch",
-                "spin", "static_approach", "normal_damping"});
+  c.allow_only({"geometry", "normal", "tangential", "saturation", "material", "reduction", "creep_coefficients",
+                "patch", "spin", "static_approach", "normal_damping"});
   ContactSection cs;
   CouplingOptions& co = cs.options;
   if (auto mat = c.find("material")) co.material = read_material(*mat, co, sc.warnings);
   const InputNode gn = c.at("geometry");
   const GeometryKind& kind = find_geometry_kind(gn);
   cs.geometry = kind.read(gn, GeometryReadContext{base, co.material, &sc.warnings});
+  // The patch shape of distributed contact (profiles; wheel_rail/strip_patches.hpp).
+  if (c.choice_or("normal", "hertz", {"hertz", "semi_hertz"}) == "semi_hertz") {
+    if (!cs.geometry->distributed())
+      c.at("normal").fail("'semi_hertz' needs the profiles geometry (contact.geometry.type: profiles), whose strips "
+                          "give the patch's shape; geometry '" + std::string(kind.name) + "' gives one Hertz ellipse "
+                          "per contact point (use 'hertz' or omit the key)");
+    cs.patch_shape = PatchShape::semi_hertz;
+  }
   co.tangential = c.string_or("tangential", "coefficients");
   co.saturation = c.choice_or("saturation", "none", {"none", "she"});
   if (auto r = c.find("reduction")) {
@@ -299,7 +308,7 @@ contact::HertzPatch nominal_patch(const Scenario& sc, const ContactGeometry& geo
     // wheel under its static vertical load, as the wheelset models form it
     // (engine/wheel_rail/strip_patches.hpp: equivalent ellipse, normal load N).
     StripLoads loads;
-    strip_approach_for_load(set, Ns, 0.0, geo.contact_modulus(), loads);
+    strip_approach_for_load(set, Ns, 0.0, geo.contact_modulus(), loads, m.patch_shape);
     int best = -1;
     for (int k = 0; k < loads.n; ++k)
       if (best < 0 || loads.N[k] > loads.N[best]) best = k;
@@ -370,6 +379,7 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
     sc.equivalent_conicity_3mm = contact::equivalent_conicity(
         [&](double y) { return geo.main_point(y).rolling_radius - geo.main_point(-y).rolling_radius; }, 3e-3, 400);
   for (auto& w : m.wheelsets) w.geometry = contact.geometry;
+  m.patch_shape = contact.patch_shape;
   if (auto in = root.find("integrator")) read_integrator(*in, sc);
 
   finalize_model(m);

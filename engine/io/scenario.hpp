@@ -19,6 +19,9 @@
 //             | {type: table, file: ../vehicles/contact_tables/RSGEO_S1002_UIC60_1in40.dat}
 //             | {type: profiles, wheel: S1002, rail: UIC60, inclination: 1/40, gauge: 1.435,
 //                flange_back: 1.36, r0: 0.46, max_shift: 0.015, step: 1e-4}   # engine/wheel_rail/profile_geometry.hpp
+//     normal: hertz | semi_hertz          # profiles: each patch's ellipse for the tangential models
+//                                       # (Hertz of its curvatures, or the semi-Hertzian area and length;
+//                                       # engine/wheel_rail/strip_patches.hpp)
 //     tangential: coefficients | <contact registry name>
 //     saturation: none | she            # coefficients only
 //     material: {E: 2.1e11, nu: 0.28, mu: 0.3, shear_modulus: 8.2e10}

@@ -100,20 +100,62 @@ void shares(const contact::StripSet& s, int jb, int je, double w, double dphi_si
 
 // Loads, vertical load and patches from the shares of strips [jb, je).
 void loads_from_shares(const contact::StripSet& s, int jb, int je, const StripWork& x, double phi_side,
-                       StripLoads& out, bool with_patches);
+                       StripLoads& out, bool with_patches, PatchShape shape);
+
+// int_0^d sqrt(g(t)) dt for g linear from g0 to g1 over d, clipped at zero.
+double sqrt_linear_integral(double g0, double g1, double d) {
+  if (g0 <= 0.0 && g1 <= 0.0) return 0.0;
+  if (g0 < 0.0 || g1 < 0.0) {  // up to the zero crossing
+    const double gp = std::max(g0, g1);
+    const double len = d * gp / (gp - std::min(g0, g1));
+    return 2.0 / 3.0 * len * std::sqrt(gp);
+  }
+  const double s0 = std::sqrt(g0), s1 = std::sqrt(g1);
+  // (2 d / 3) (g1^{3/2} - g0^{3/2}) / (g1 - g0), written without the cancellation
+  return 2.0 / 3.0 * d * (g0 + s0 * s1 + g1) / (s0 + s1);
+}
+
+// The semi-Hertzian ellipse of the run of strips [j, e] (strip_patches.hpp):
+// semi-axes (a_s, b_s) from the Hertz ellipse (a, b) of curvatures (A, Be) at
+// the approach pmax. Segments to the run's unloaded neighbours are included
+// (g falls below zero inside them).
+void semi_hertz_axes(const contact::StripSet& s, int jb, int je, int j, int e, const StripWork& x, double pmax,
+                     double A, double Be, double& a, double& b) {
+  const double eps = Be * b * b / pmax;
+  const double cA = Be * b * b / (A * a * a);
+  const double shift = (1.0 - eps) * pmax;
+  // half-length squared per strip, x_j^2 = g_j / (c_A A_j); A_j <= 0 (a strip
+  // of the run with no longitudinal curvature of its own) takes the patch's A.
+  auto g_over_curv = [&](int q) {
+    const double Aq = s.s[q].A > 0.0 ? s.s[q].A : A;
+    return (x.p[q] - shift) / (cA * Aq);
+  };
+  double area = 0.0, amax = 0.0;
+  const int lo = (j > jb && s.s[j - 1].index + 1 == s.s[j].index) ? j - 1 : j;
+  const int hi = (e + 1 < je && s.s[e + 1].index == s.s[e].index + 1) ? e + 1 : e;
+  for (int q = lo; q <= hi; ++q) {
+    const double u = g_over_curv(q);
+    if (u > 0.0) amax = std::max(amax, std::sqrt(u));
+    if (q < hi) area += 2.0 * sqrt_linear_integral(u, g_over_curv(q + 1), s.width);
+  }
+  if (amax > 0.0 && area > 0.0) {
+    a = amax;
+    b = area / (M_PI * amax);
+  }
+}
 
 }  // namespace
 
 void strip_loads(const contact::StripSet& s, double w, double dphi_side, double phi_side, double Es, StripLoads& out,
-                 bool with_patches) {
+                 bool with_patches, PatchShape shape) {
   StripWork x;
   shares(s, 0, s.n, w, dphi_side, Es, nullptr, x);
-  loads_from_shares(s, 0, s.n, x, phi_side, out, with_patches);
+  loads_from_shares(s, 0, s.n, x, phi_side, out, with_patches, shape);
 }
 
 namespace {
 void loads_from_shares(const contact::StripSet& s, int jb, int je, const StripWork& x, double phi_side,
-                       StripLoads& out, bool with_patches) {
+                       StripLoads& out, bool with_patches, PatchShape shape) {
   out.n = 0;
   out.vertical = 0.0;
   out.dvertical = 0.0;
@@ -172,6 +214,7 @@ void loads_from_shares(const contact::StripSet& s, int jb, int je, const StripWo
         contact::StripContactTable::hertz_axis_factors(Be / c.A, alpha, beta);
         c.semi_a = alpha * std::sqrt(pmax / c.A);
         c.semi_b = beta * std::sqrt(pmax / Be);
+        if (shape == PatchShape::semi_hertz) semi_hertz_axes(s, jb, je, j, e, x, pmax, c.A, Be, c.semi_a, c.semi_b);
       }
       out.N[out.n] = N;
       out.rate_weight[out.n] = rw;
@@ -184,7 +227,8 @@ void loads_from_shares(const contact::StripSet& s, int jb, int je, const StripWo
 }
 }  // namespace
 
-double strip_approach_for_load(const contact::StripSet& s, double Q, double phi_side, double Es, StripLoads& out) {
+double strip_approach_for_load(const contact::StripSet& s, double Q, double phi_side, double Es, StripLoads& out,
+                               PatchShape shape) {
   // Z(w) is increasing and convex-ish (0 while nothing is loaded); Newton from
   // the smallest gap, guarded by bisection on a bracket. cos(delta_j) is
   // computed once per strip, and only for strips that can be loaded.
@@ -200,7 +244,7 @@ double strip_approach_for_load(const contact::StripSet& s, double Q, double phi_
   int jb = 0, je = s.n;  // strips evaluated: all, then those that can be loaded below the bracket's top
   auto evaluate = [&](double w, bool with_patches) {
     shares(s, jb, je, w, 0.0, Es, cos_cache, x);
-    loads_from_shares(s, jb, je, x, phi_side, out, with_patches);
+    loads_from_shares(s, jb, je, x, phi_side, out, with_patches, shape);
   };
   double lo = vmin, hi = vmin + 1e-4;
   for (int it = 0; it < 40; ++it) {  // grow the bracket until it carries Q

@@ -21,13 +21,28 @@
 // below the axle) and longitudinal curvature A; its equivalent ellipse (for
 // the tangential models) is Hertz's for the patch's A and the lateral
 // curvature B_e of the parabola that has the patch's largest penetration p_max
-// and its width at p_max/2 (exact for a quadratic gap). Units SI.
+// and its width at p_max/2 (exact for a quadratic gap).
+// With PatchShape::semi_hertz the ellipse handed to the tangential models has
+// instead the area and length of the semi-Hertzian patch of Ayasse & Chollet
+// (2005; physics-reference sec. 5.2; contact/geometry/semi_hertz.hpp): with
+// the Hertz ellipse (a, b) above at the approach delta = p_max, the virtual
+// penetration eps delta, eps = B_e b^2 / delta, and the corrected curvature
+// c_A A_j, c_A = B_e b^2 / (A a^2), each strip's virtual interpenetration
+// g_j = p_j - (1 - eps) delta gives the half-length x_j = sqrt(g_j / (c_A A_j)).
+// The patch's area S = int 2 x(q) dq (g linear between strips, integrated
+// exactly) and its length 2 a_s, a_s = max x_j, give the ellipse a_s,
+// b_s = S / (pi a_s). For a quadratic gap this is the Hertz ellipse; where
+// the curvatures vary across the patch (flange root) its area and shape
+// follow the profiles. The loads are the strips' either way. Units SI.
 #pragma once
 
 #include "contact/geometry/strip_contact_table.hpp"
 #include "engine/wheel_rail/contact_geometry.hpp"
 
 namespace railsim::engine {
+
+// Shape of the ellipse a patch hands to the tangential models (above).
+enum class PatchShape { hertz, semi_hertz };
 
 struct StripLoads {
   int n = 0;                                          // patches
@@ -41,10 +56,11 @@ struct StripLoads {
 // Loads of one wheel's strips; phi_side = side x the wheelset's roll (for the
 // vertical component), dphi_side = side x the roll beyond the rigid pose.
 void strip_loads(const contact::StripSet& strips, double w, double dphi_side, double phi_side, double Es,
-                 StripLoads& out, bool with_patches = true);
+                 StripLoads& out, bool with_patches = true, PatchShape shape = PatchShape::hertz);
 
 // The vertical approach w at which the wheel carries the vertical load Q
 // (dphi = 0: the lateral model's roll is the rigid pose's), and the loads there.
-double strip_approach_for_load(const contact::StripSet& strips, double Q, double phi_side, double Es, StripLoads& out);
+double strip_approach_for_load(const contact::StripSet& strips, double Q, double phi_side, double Es, StripLoads& out,
+                               PatchShape shape = PatchShape::hertz);
 
 }  // namespace railsim::engine

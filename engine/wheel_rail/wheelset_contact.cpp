@@ -163,7 +163,7 @@ bool distributed_loads(const Model& model, Data& d, int w, const WheelsetKinemat
       // Largest w - dphi a over the wheel's strips, a within l0 -+ kStripLateralReach.
       const double reach = wi - dphi * (dphi > 0.0 ? geo.l0() - kStripLateralReach : geo.l0() + kStripLateralReach);
       geo.strips(side * k.y, side * k.psi, std::min(kStripGapCutoff, reach + 1e-6), strips[i]);
-      strip_loads(strips[i], wi, dphi, 0.0, Es, L);
+      strip_loads(strips[i], wi, dphi, 0.0, Es, L, true, model.patch_shape);
       patches_to_points(L, mat, g[i], N[i]);
       if (cn > 0.0) {
         const double rate0 = m.v[kVert] - d.V * dzr - ref.dheight_dy * k.ydot;
@@ -209,10 +209,10 @@ bool distributed_loads(const Model& model, Data& d, int w, const WheelsetKinemat
   for (int i = 0; i < 2; ++i) {
     if (!(Qlat[i] > 0.0)) return lateral_loss_of_contact(d, ws, i, Qlat[i]);
     // Loaded strips have gap < w cos(delta) <= w: fetched unless w reached the cutoff.
-    if (strip_approach_for_load(strips[i], Qlat[i], 0.0, Es, L) >= kLateralFirstCutoff) {
+    if (strip_approach_for_load(strips[i], Qlat[i], 0.0, Es, L, model.patch_shape) >= kLateralFirstCutoff) {
       const int side = i == 0 ? 1 : -1;
       geo.strips(side * k.y, side * k.psi, kStripGapCutoff, strips[i]);
-      strip_approach_for_load(strips[i], Qlat[i], 0.0, Es, L);
+      strip_approach_for_load(strips[i], Qlat[i], 0.0, Es, L, model.patch_shape);
     }
     patches_to_points(L, mat, g[i], N[i]);
   }
