@@ -105,7 +105,7 @@ BENCHMARK(BM_HertzShapeCachedKalkerChopaya);
 
 const int kRegistered = [] {
   for (const auto& e : tangential_models())
-    if (!e.tabulated)  // mim_table's lookup: bench_fastsim
+    if (e.compared_by_default())  // mim_table's lookup: bench_fastsim; coefficients: as linear / she
     benchmark::RegisterBenchmark(("BM_Model/" + std::string(e.name)).c_str(), BM_Model, &e);
   return 0;
 }();

@@ -120,12 +120,13 @@ ContactAuditResult audit_contacts(const std::vector<ContactInput>& states, const
   std::vector<std::string> names = o.models;
   if (names.empty())
     for (const auto& e : tangential_models())
-      if (!e.tabulated) names.emplace_back(e.name);
+      if (e.compared_by_default()) names.emplace_back(e.name);
   // Build every model first: an unknown name fails before any solve.
   std::vector<std::unique_ptr<TangentialModel>> models;
   for (const auto& n : names) {
     TangentialModelOptions mo;
     mo.cache_dir = o.cache_dir;
+    mo.saturation = o.saturation;
     models.push_back(make_tangential_model(n, mo));
   }
   const auto mim = make_tangential_model("mim", {o.mim_grid, o.mim_tolerance, ""});

@@ -18,8 +18,8 @@
 // A model that throws on a state (NumericalError) counts as failing there
 // (error +inf). States without load (Fz <= 0) or without a patch (a or b
 // not positive, e.g. prescribed creep coefficients) are skipped.
-// Forces given from elsewhere (what a run's own model returned, e.g. the
-// engine's "coefficients" mode that is no registry model) are audited against
+// Forces given from elsewhere (computed by code outside the registry, e.g. a
+// model under development or another program's results) are audited against
 // the same reference by audit_given_forces(); their cost is not measured (NaN).
 // audit_verdict() reads the table: the run's model, whether it met the
 // tolerance, the cheapest model that did, the cheaper ones that did, and the
@@ -40,10 +40,12 @@ struct ContactAuditOptions {
   int mim_grid = 60;           // MIM elements across the minor axis, in [8, 400]
   double mim_tolerance = 1e-6; // MIM tangential tolerance, in (0, 1e-2]
   double tolerance = 0.02;     // a model meets the audit when its max error <= this, in (0, 1]
-  // Models to audit by registry name; empty = every registered model that is
-  // not tabulated (mim_table needs its cached table: name it to include it).
+  // Models to audit by registry name; empty = every registered model compared
+  // by default (TangentialModelEntry::compared_by_default(): mim_table needs
+  // its cached table, coefficients the geometry's: name them to include them).
   std::vector<std::string> models;
   std::string cache_dir;       // table cache folder for tabulated models
+  std::string saturation = "none";  // saturation law of the model "coefficients" (registry.hpp)
   int threads = 1;             // worker threads, in [1, 64]
 };
 

@@ -43,20 +43,22 @@ class LinearTheory final : public TangentialModel {
   std::string_view name() const override { return "linear"; }
   bool coulomb_bounded() const override { return false; }  // the unsaturated theory by definition
   ContactForces compute(const ContactInput& in, TangentialWorkspace*) const override {
-    const LinearCoefficients f = linear_coefficients(in);
-    ContactForces out = scaled_forces(linear_forces(f, in.creep), 1.0);
-    if (norm2(out.Fx, out.Fy) > kLimit * in.material.mu * in.patch.Fz) {
-      out.valid = false;
-      out.reason = "linear theory beyond small creepage (|F| > 0.3 mu Fz)";
-    }
-    return out;
+    return linear_theory_forces(linear_coefficients(in), in);
   }
-
- private:
-  static constexpr double kLimit = 0.3;
 };
 
+constexpr double kSmallCreepageLimit = 0.3;  // |F| / (mu Fz) beyond which "linear" flags its result
+
 }  // namespace
+
+ContactForces linear_theory_forces(const LinearCoefficients& f, const ContactInput& in) {
+  ContactForces out = scaled_forces(linear_forces(f, in.creep), 1.0);
+  if (norm2(out.Fx, out.Fy) > kSmallCreepageLimit * in.material.mu * in.patch.Fz) {
+    out.valid = false;
+    out.reason = "linear theory beyond small creepage (|F| > 0.3 mu Fz)";
+  }
+  return out;
+}
 
 LinearCoefficients linear_coefficients(const ContactInput& in) {
   check_input(in);

@@ -39,6 +39,11 @@ struct LinearForces {
 };
 LinearForces linear_forces(const LinearCoefficients& f, const Creepages& c);
 
+// The "linear" model's law on given coefficients: the linear forces, flagged
+// invalid when |F| > 0.3 mu Fz (also the law "none" of the model
+// "coefficients").
+ContactForces linear_theory_forces(const LinearCoefficients& f, const ContactInput& in);
+
 // Forces of a force-level saturation law: the linear forces times eps (direction
 // of the linear force kept, spin moment scaled alike).
 ContactForces scaled_forces(const LinearForces& lin, double eps);

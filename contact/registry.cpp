@@ -3,6 +3,8 @@
 // and add one line to the table.
 #include "contact/registry.hpp"
 
+#include "contact/linear_theory.hpp"
+#include "contact/she.hpp"
 #include "core/errors.hpp"
 
 namespace railsim::contact {
@@ -20,6 +22,7 @@ std::unique_ptr<TangentialModel> make_fastsim_parabolic(const TangentialModelOpt
 std::unique_ptr<TangentialModel> make_fastrip(const TangentialModelOptions&);
 std::unique_ptr<TangentialModel> make_mim(const TangentialModelOptions&);
 std::unique_ptr<TangentialModel> make_mim_table(const TangentialModelOptions&);
+std::unique_ptr<TangentialModel> make_coefficients(const TangentialModelOptions&);
 
 const std::vector<TangentialModelEntry>& tangential_models() {
   static const std::vector<TangentialModelEntry> table = {
@@ -61,22 +64,58 @@ const std::vector<TangentialModelEntry>& tangential_models() {
       {"mim_table", "exact MIM results tabulated over a/b and normalised creepages/spin (USETAB-like), cubic "
                     "interpolation; the table is built once (56,277 solves) and cached",
        &make_mim_table, true, "exact values interpolated over (xi', eta' + psi'/3, psi'): within 2 % of mu Fz"},
+      {"coefficients", "Kalker's linear theory on the contact geometry's creep coefficients (RSGEO table C_ij or "
+                       "prescribed f_ij), saturated by the law `saturation` (none | she)", &make_coefficients, false,
+       "as linear (saturation none) or she (saturation she) with the geometry's C23; flagged alike", true},
   };
   return table;
 }
 
-std::string tangential_model_names() {
+const std::vector<SaturationLawEntry>& saturation_laws() {
+  static const std::vector<SaturationLawEntry> table = {
+      // {"name", "description", &forces, coulomb_bounded},
+      {"none", "none (linear creep forces, coefficients mode)", &linear_theory_forces, false},
+      {"she", "Shen-Hedrick-Elkins cubic on the resultant (coefficients mode)", &she_forces, true},
+  };
+  return table;
+}
+
+namespace {
+
+// "a, b, c" of a table's names.
+template <class Entry>
+std::string names_of(const std::vector<Entry>& table) {
   std::string s;
-  for (const auto& e : tangential_models()) s += (s.empty() ? "" : ", ") + std::string(e.name);
+  for (const auto& e : table) s += (s.empty() ? "" : ", ") + std::string(e.name);
   return s;
+}
+
+// The entry called `name`; InputError "unknown <what> 'name' (known <plural>: ...)" otherwise.
+template <class Entry>
+const Entry& find_in(const std::vector<Entry>& table, std::string_view name, const char* what, const char* plural) {
+  for (const auto& e : table)
+    if (name == e.name) return e;
+  throw InputError("unknown " + std::string(what) + " '" + std::string(name) + "' (known " + plural + ": " +
+                   names_of(table) + ")");
+}
+
+}  // namespace
+
+std::string saturation_law_names() { return names_of(saturation_laws()); }
+
+const SaturationLawEntry& find_saturation_law(std::string_view name) {
+  return find_in(saturation_laws(), name, "saturation law", "laws");
+}
+
+std::string tangential_model_names() { return names_of(tangential_models()); }
+
+const TangentialModelEntry& find_tangential_model(std::string_view name) {
+  return find_in(tangential_models(), name, "contact model", "models");
 }
 
 std::unique_ptr<TangentialModel> make_tangential_model(std::string_view name,
                                                        const TangentialModelOptions& options) {
-  for (const auto& e : tangential_models())
-    if (name == e.name) return e.make(options);
-  throw InputError("unknown contact model '" + std::string(name) + "' (known models: " +
-                   tangential_model_names() + ")");
+  return find_tangential_model(name).make(options);
 }
 
 }  // namespace railsim::contact

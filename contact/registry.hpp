@@ -1,6 +1,7 @@
 // Registry of tangential (creep-force) models, chosen by name from YAML or the
-// command line. Adding a model is adding one file (which defines its factory)
-// and one line in registry.cpp.
+// command line, and of the saturation laws of the model "coefficients".
+// Adding a model is adding one file (which defines its factory) and one line in
+// registry.cpp.
 #pragma once
 
 #include <memory>
@@ -17,6 +18,7 @@ struct TangentialModelOptions {
   int grid = 0;             // discretisation (elements across the minor axis); 0 = model default
   double tolerance = 0.0;   // solver tolerance; 0 = model default
   std::string cache_dir;    // table cache folder (tabulated models); empty = default
+  std::string saturation = "none";  // model "coefficients": its saturation law (saturation_laws())
 };
 
 using TangentialFactory = std::unique_ptr<TangentialModel> (*)(const TangentialModelOptions&);
@@ -36,10 +38,22 @@ struct TangentialModelEntry {
   // peaks near phi = 0.75 1/m on these patches (psi' = G c^3 C23 phi/(mu Fz)
   // about 1) and then falls (0.20 mu Fz at 5 1/m, circular patch).
   const char* spin = "";
+  // Takes its creep coefficients from the contact geometry
+  // (ContactInput::coefficients; model "coefficients"). On a bare patch it is
+  // the linear theory or SHE again, so comparisons of models leave it out.
+  bool geometry_coefficients = false;
+
+  // Run by commands and audits that compare every model by default: neither
+  // tabulated (the table would be built) nor taking the geometry's coefficients.
+  bool compared_by_default() const { return !tabulated && !geometry_coefficients; }
 };
 
 // Every registered model, in the order they are listed to users.
 const std::vector<TangentialModelEntry>& tangential_models();
+
+// The entry of a model by name, without building it (mim_table's table is not
+// loaded or built); unknown names throw InputError listing the known ones.
+const TangentialModelEntry& find_tangential_model(std::string_view name);
 
 // Build a model by name; unknown names throw InputError listing the known ones.
 std::unique_ptr<TangentialModel> make_tangential_model(std::string_view name,
@@ -47,5 +61,25 @@ std::unique_ptr<TangentialModel> make_tangential_model(std::string_view name,
 
 // "linear, linear_sat, ..." for help texts and error messages.
 std::string tangential_model_names();
+
+struct LinearCoefficients;  // contact/linear_theory.hpp
+
+// A saturation law of the model "coefficients": the forces for the linear
+// coefficients f_ij and the creepages of `in`, with the law's validity flag.
+struct SaturationLawEntry {
+  const char* name;
+  const char* description;
+  ContactForces (*forces)(const LinearCoefficients& f, const ContactInput& in);
+  bool coulomb_bounded;  // false for "none" (the unsaturated linear theory)
+};
+
+// Every saturation law, in the order they are listed to users.
+const std::vector<SaturationLawEntry>& saturation_laws();
+
+// A law by name; unknown names throw InputError listing the known ones.
+const SaturationLawEntry& find_saturation_law(std::string_view name);
+
+// "none, she" for help texts and error messages.
+std::string saturation_law_names();
 
 }  // namespace railsim::contact

@@ -14,41 +14,44 @@
 // normalised spin psi = |f23 phi| / (mu Fz) exceeds 0.3 (provisional limit, to be
 // revisited against the exact solver).
 // Units: SI; signs as in types.hpp.
+#include "contact/she.hpp"
+
 #include <cmath>
 
-#include "contact/linear_theory.hpp"
 #include "contact/registry.hpp"
 
 namespace railsim::contact {
 
 namespace {
 
+constexpr double kSpinLimit = 0.3;  // psi = |f23 phi| / (mu Fz) beyond which SHE flags its result
+
 class ShenHedrickElkins final : public TangentialModel {
  public:
   std::string_view name() const override { return "she"; }
   ContactForces compute(const ContactInput& in, TangentialWorkspace*) const override {
-    const LinearCoefficients f = linear_coefficients(in);
-    const LinearForces lin = linear_forces(f, in.creep);
-    const double bound = in.material.mu * in.patch.Fz;
-    const double beta = norm2(lin.Fx, lin.Fy) / bound;
-    double eps = 1.0;  // F_R / |F_lin|, limit 1 at beta -> 0
-    if (beta > 3.0)
-      eps = 1.0 / beta;
-    else if (beta > 0.0)
-      eps = 1.0 - beta / 3.0 + beta * beta / 27.0;
-    ContactForces out = scaled_forces(lin, eps);
-    if (spin_measure(f, in) > kSpinLimit) {
-      out.valid = false;
-      out.reason = "large spin (|f23 phi| > 0.3 mu Fz): SHE over-estimates the spin force";
-    }
-    return out;
+    return she_forces(linear_coefficients(in), in);
   }
-
- private:
-  static constexpr double kSpinLimit = 0.3;
 };
 
 }  // namespace
+
+ContactForces she_forces(const LinearCoefficients& f, const ContactInput& in) {
+  const LinearForces lin = linear_forces(f, in.creep);
+  const double bound = in.material.mu * in.patch.Fz;
+  const double beta = norm2(lin.Fx, lin.Fy) / bound;
+  double eps = 1.0;  // F_R / |F_lin|, limit 1 at beta -> 0
+  if (beta > 3.0)
+    eps = 1.0 / beta;
+  else if (beta > 0.0)
+    eps = 1.0 - beta / 3.0 + beta * beta / 27.0;
+  ContactForces out = scaled_forces(lin, eps);
+  if (spin_measure(f, in) > kSpinLimit) {
+    out.valid = false;
+    out.reason = "large spin (|f23 phi| > 0.3 mu Fz): SHE over-estimates the spin force";
+  }
+  return out;
+}
 
 std::unique_ptr<TangentialModel> make_she(const TangentialModelOptions&) {
   return std::make_unique<ShenHedrickElkins>();

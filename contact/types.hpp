@@ -61,6 +61,24 @@ struct HertzPatch {
   double Fz = 0.0;
 };
 
+// Creep coefficients the contact geometry gives instead of Kalker's table at
+// the patch's a/b: an RSGEO-type contact table's C_ij at this patch, or
+// coefficients prescribed in force units at a reference load. Read by the
+// model "coefficients" (contact/coefficients.cpp) only; the other models
+// compute theirs from the patch and ignore these. Zero = not given.
+struct GeometryCoefficients {
+  // Kalker's coefficients at this patch [-], used when C11 > 0 (the tables
+  // carry no C33: 0 there).
+  double C11 = 0.0, C22 = 0.0, C23 = 0.0, C33 = 0.0;
+  // f11, f22 [N], f23 [N m], f33 [N m^2] at the load Fz_ref [N], used when
+  // f11 > 0 (before C_ij), scaled with the load as f11, f22 ~ Fz^(2/3),
+  // f23 ~ Fz, f33 ~ Fz^(4/3) (Hertz: a, b ~ Fz^(1/3)).
+  double f11 = 0.0, f22 = 0.0, f23 = 0.0, f33 = 0.0;
+  double Fz_ref = 0.0;
+  // Shear modulus G for the C_ij [Pa]; 0 = Material::shear_modulus().
+  double shear_modulus = 0.0;
+};
+
 // Everything a tangential model needs for one contact.
 struct ContactInput {
   HertzPatch patch;            // normal solution (patch size, load)
@@ -68,6 +86,7 @@ struct ContactInput {
   Material material;           // E, nu, mu
   ReductionFactors reduction;  // k11, k22, k23
   double rolling_speed = 0.0;  // [m/s], only for slip-velocity-dependent friction
+  GeometryCoefficients coefficients;  // optional, model "coefficients" only (see above)
 };
 
 // Result of a tangential model for one contact (forces of the rail on the wheel).

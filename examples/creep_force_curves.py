@@ -57,7 +57,7 @@ def main():
     args = ap.parse_args()
     os.makedirs(args.out, exist_ok=True)
     models = [m["name"] for m in railsim.tangential_models()
-              if m["name"] != "mim" and (args.tabulated or not m["tabulated"])]
+              if m["name"] != "mim" and (m["compared_by_default"] or (args.tabulated and m["tabulated"]))]
     muN = MATERIAL["mu"] * PATCH["Fz"]
     results = {}
     print(f"{'model':<14}" + "".join(f"{c:>20}" for c in curve_cases(args.points)))

@@ -20,15 +20,6 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kDeg = 180.0 / 3.14159265358979323846;
 
-bool is_registry_model(const std::string& name, bool* tabulated) {
-  for (const auto& e : contact::tangential_models())
-    if (name == e.name) {
-      *tabulated = e.tabulated;
-      return true;
-    }
-  return false;
-}
-
 double reference_median_us(const contact::ContactAuditResult& r) {
   std::vector<double> c;
   for (std::size_t s = 0; s < r.audited.size(); ++s)
@@ -38,11 +29,9 @@ double reference_median_us(const contact::ContactAuditResult& r) {
   const std::size_t h = c.size() / 2;
   return 1e-3 * (c.size() % 2 ? c[h] : 0.5 * (c[h - 1] + c[h]));
 }
-
-std::string as_run_name(const std::string& run_model) { return run_model + " (as run)"; }
 }  // namespace
 
-RunContactAudit run_contact_audit(const ContactStateRecorder& rec, const std::string& run_model,
+RunContactAudit run_contact_audit(const ContactStateRecorder& rec, const CouplingOptions& run,
                                   const RunContactAuditOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
   if (!(o.tolerance > 0.0 && o.tolerance <= 1.0))
@@ -73,29 +62,23 @@ RunContactAudit run_contact_audit(const ContactStateRecorder& rec, const std::st
   co.tolerance = o.tolerance;
   co.threads = o.threads;
   co.cache_dir = o.cache_dir;
-  bool tabulated = false;
-  const bool registry = is_registry_model(run_model, &tabulated);
+  co.saturation = run.saturation;
+  const std::string run_model = contact::find_tangential_model(run.tangential).name;
   for (const auto& e : contact::tangential_models())
-    if (!e.tabulated || (tabulated && run_model == e.name)) co.models.emplace_back(e.name);
+    if (e.compared_by_default() || run_model == e.name) co.models.emplace_back(e.name);
   a.result = contact::audit_contacts(inputs, co);
   if (std::none_of(a.result.audited.begin(), a.result.audited.end(), [](bool b) { return b; }))
     throw InputError("contact audit: none of the " + std::to_string(inputs.size()) +
                      " sampled contact states has a patch (semi-axes a, b > 0) to solve: the run's contact gives "
                      "creep coefficients without a patch shape (conical wheels without patch_a, patch_b)");
-  a.reproduction = kNaN;
-  if (registry) {
-    a.run_model = run_model;
-    const auto m = static_cast<std::size_t>(a.result.find(run_model));
-    a.reproduction = 0.0;
-    for (std::size_t s = 0; s < inputs.size(); ++s) {
-      if (!a.result.audited[s]) continue;
-      const auto& f = a.result.forces[m][s];
-      a.reproduction = std::max(a.reproduction, std::hypot(f.Fx - run_forces[s].Fx, f.Fy - run_forces[s].Fy) /
-                                                    (inputs[s].material.mu * inputs[s].patch.Fz));
-    }
-  } else {
-    a.run_model = as_run_name(run_model);
-    contact::audit_given_forces(a.result, a.run_model, inputs, run_forces);
+  a.run_model = run_model;
+  const auto m = static_cast<std::size_t>(a.result.find(run_model));
+  a.reproduction = 0.0;
+  for (std::size_t s = 0; s < inputs.size(); ++s) {
+    if (!a.result.audited[s]) continue;
+    const auto& f = a.result.forces[m][s];
+    a.reproduction = std::max(a.reproduction, std::hypot(f.Fx - run_forces[s].Fx, f.Fy - run_forces[s].Fy) /
+                                                  (inputs[s].material.mu * inputs[s].patch.Fz));
   }
   a.verdict = contact::audit_verdict(a.result, a.run_model);
   a.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

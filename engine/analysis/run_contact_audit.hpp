@@ -6,15 +6,16 @@
 // which cheaper or more accurate model would have met a tolerance over this
 // run's contacts.
 //
-// The run's own model: a registry model is re-solved on the sampled inputs
-// (`reproduction`: the largest |F_run - F_resolved| / (mu N), zero when the
-// states are the run's own; a tabulated model the run used, mim_table, is
-// audited too); the engine's "coefficients" mode (no registry model) enters
-// with the forces the run computed, as "coefficients (as run)", cost not
-// measured. A state whose patch has semi-axes but no curvatures A, B (a
-// contact table's patch, coefficients mode) gets the Hertzian curvatures that
-// give those semi-axes at its load (contact::hertz_from_semi_axes; MIM needs
-// the gap), counted in `completed_patches`.
+// The run's own model is re-solved on the sampled inputs with the run's
+// options (`reproduction`: the largest |F_run - F_resolved| / (mu N), zero
+// when the states are the run's own); it is audited even where comparisons
+// leave it out by default (a tabulated model, mim_table; the model on the
+// geometry's coefficients, "coefficients", with the run's saturation law and
+// the coefficients each sampled input carries). A state whose patch has
+// semi-axes but no curvatures A, B (a contact table's patch) gets the
+// Hertzian curvatures that give those semi-axes at its load
+// (contact::hertz_from_semi_axes; MIM needs the gap), counted in
+// `completed_patches`.
 // Files (write_contact_audit): DIR/contact_audit.csv, one row per state x
 // model (the state: time, distance, wheelset, side, patch, contact angle, a,
 // b, A, B, p0, Fz, xi, eta, phi, mu, k11, k22, k23, V, why it was chosen; the
@@ -31,6 +32,7 @@
 
 #include "contact/contact_audit.hpp"
 #include "engine/analysis/contact_state_sample.hpp"
+#include "engine/wheel_rail_coupling.hpp"
 #include "results/chart.hpp"
 #include "results/json_writer.hpp"
 
@@ -54,14 +56,14 @@ struct RunContactAudit {
   std::size_t completed_patches = 0;     // sampled states given Hertzian curvatures (see above)
   contact::ContactAuditResult result;
   contact::AuditVerdict verdict;
-  double reproduction = 0.0;             // registry run model: max |F_run - F_resolved| / (mu N); NaN otherwise
+  double reproduction = 0.0;             // max |F_run - F_resolved| / (mu N) of the run's model
   double wall_seconds = 0.0;
 };
 
-// `run_model`: the coupling's tangential name (CouplingOptions::tangential).
+// `run`: the run's coupling options (tangential model and saturation law).
 // Throws InputError for options outside their ranges or no recorded state,
 // NumericalError when the reference fails.
-RunContactAudit run_contact_audit(const ContactStateRecorder& recorder, const std::string& run_model,
+RunContactAudit run_contact_audit(const ContactStateRecorder& recorder, const CouplingOptions& run,
                                   const RunContactAuditOptions& options);
 
 // The summary document's "contact_audit" section.

@@ -16,12 +16,9 @@ results::Json number_or_null(double v) { return std::isfinite(v) ? results::Json
 
 std::string saturation_law(const Scenario& sc) {
   const CouplingOptions& o = sc.model.coupling.options();
-  if (o.tangential == "coefficients")
-    return o.saturation == "she" ? "Shen-Hedrick-Elkins cubic on the resultant (coefficients mode)"
-                                 : "none (linear creep forces, coefficients mode)";
-  for (const auto& e : contact::tangential_models())
-    if (o.tangential == e.name) return std::string(e.name) + ": " + e.description;
-  return o.tangential;
+  const contact::TangentialModelEntry& e = contact::find_tangential_model(o.tangential);
+  if (e.geometry_coefficients) return contact::find_saturation_law(o.saturation).description;
+  return std::string(e.name) + ": " + e.description;
 }
 
 results::Json reduction_record(const Scenario& sc) {

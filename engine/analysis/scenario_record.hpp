@@ -20,7 +20,8 @@ results::Json reduction_record(const Scenario& sc);
 results::Json scenario_record(const Scenario& sc);
 
 // Saturation law of the scenario's creep forces, in words (the tangential
-// model's own for registry models; none / she for the coefficients mode).
+// model's own; for a model on the geometry's coefficients, "coefficients", the
+// law chosen by `saturation`).
 std::string saturation_law(const Scenario& sc);
 
 }  // namespace railsim::engine

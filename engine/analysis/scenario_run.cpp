@@ -586,11 +586,10 @@ bool chart_sum_y_rms(const engine::RunSafety& rs, const ChartContext& ctx, resul
 void audit_run(const engine::Scenario& sc, const ContactStateRecorder& rec, const ScenarioRunOptions& o,
                ScenarioRunResult& out) {
   const auto& m = sc.model;
-  const std::string model = m.coupling.options().tangential;
   spdlog::info("contact audit: {} of the run's {} contact states, MIM grid {}, every registered model ({} threads)",
                std::min<std::size_t>(static_cast<std::size_t>(o.contact_audit.samples), rec.states().size()),
                rec.states().size(), o.contact_audit.mim_grid, o.contact_audit.threads);
-  out.contact_audit = run_contact_audit(rec, model, o.contact_audit);
+  out.contact_audit = run_contact_audit(rec, m.coupling.options(), o.contact_audit);
   out.audited = true;
   const RunContactAudit& a = out.contact_audit;
   out.summary.set("contact_audit", contact_audit_json(a, m));

@@ -11,6 +11,7 @@
 #include "contact/geometry/wheel_rail_geometry.hpp"
 #include "contact/hertz.hpp"
 #include "contact/reduction.hpp"
+#include "contact/registry.hpp"
 #include "core/errors.hpp"
 #include "engine/equilibrium.hpp"
 #include "engine/wheel_rail/geometry_registry.hpp"
@@ -213,7 +214,7 @@ ContactSection read_contact(const InputNode& c, const std::string& base, Scenari
   // conical wheels need coefficients, a patch or Hertz curvatures.
   const ContactPointGeometry c0 = cs.geometry->main_point(0.0);
   cs.hertz = !kind.carries_patch && c0.A > 0 && c0.B > 0;
-  if (!kind.carries_patch && co.patch_a <= 0 && !cs.hertz && !(co.tangential == "coefficients" && co.f11 > 0))
+  if (!kind.carries_patch && co.patch_a <= 0 && !cs.hertz && !(co.f11 > 0 && contact::find_tangential_model(co.tangential).geometry_coefficients))
     c.fail("conical wheels need 'creep_coefficients' (f11, f22, ...; tangential 'coefficients' only), 'patch' "
            "(a, b, N_ref) or geometry 'curvatures' (A, B) for Hertz");
   if (cs.hertz && (co.patch_a > 0 || c.has("static_approach")))

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdio>
 
-#include "contact/kalker_coefficients.hpp"
 #include "contact/reduction.hpp"
 #include "contact/registry.hpp"
 #include "core/errors.hpp"
@@ -12,8 +11,9 @@
 namespace railsim::engine {
 
 WheelRailCoupling::WheelRailCoupling(const CouplingOptions& o) : opt_(o) {
-  G_ = o.shear_modulus > 0 ? o.shear_modulus : o.material.shear_modulus();
-  if (o.tangential != "coefficients") model_ = contact::make_tangential_model(o.tangential);
+  contact::TangentialModelOptions mo;
+  mo.saturation = o.saturation;
+  model_ = contact::make_tangential_model(o.tangential, mo);
 }
 
 std::unique_ptr<contact::TangentialWorkspace> WheelRailCoupling::make_workspace() const {
@@ -51,59 +51,32 @@ contact::ContactForces WheelRailCoupling::forces(const ContactPointGeometry& g, 
   in.material = opt_.material;
   in.reduction = opt_.reduction;
   in.rolling_speed = V;
-  if (used) *used = in;
-  if (!model_) {
-    double f11, f22, f23, f33;
-    if (opt_.f11 > 0) {
-      const double r = N / Nref;
-      const double r23 = std::cbrt(r * r);
-      f11 = opt_.f11 * r23;
-      f22 = opt_.f22 * r23;
-      f23 = opt_.f23 * r;
-      f33 = opt_.f33 * r23 * r23;
-    } else {
-      const double ab = a * b, c = std::sqrt(ab);
-      double C11 = g.C11, C22 = g.C22, C23 = g.C23, C33 = 0.0;  // C33 not in the tables (physics-reference §13 item 1)
-      if (C11 <= 0.0 && a > 0 && b > 0) {  // no table coefficients: Kalker's table at this a/b (contact library)
-        const contact::KalkerCoefficients k = contact::kalker_coefficients(a / b, opt_.material.nu);
-        C11 = k.C11;
-        C22 = k.C22;
-        C23 = k.C23;
-        C33 = k.C33;
-      }
-      f11 = G_ * ab * C11;
-      f22 = G_ * ab * C22;
-      f23 = G_ * ab * c * C23;
-      f33 = G_ * ab * ab * C33;
-    }
-    f11 *= opt_.reduction.k11;
-    f22 *= opt_.reduction.k22;
-    f23 *= opt_.reduction.k23;
-    f33 *= opt_.reduction.k23;
-    out.Fx = -f11 * cr.xi;
-    out.Fy = -f22 * cr.eta - f23 * cr.phi;
-    out.Mz = f23 * cr.eta - f33 * cr.phi;
-    if (opt_.saturation == "she") {
-      const double F = std::hypot(out.Fx, out.Fy);
-      const double muN = opt_.material.mu * N;
-      if (F > 0) {
-        const double u = F / muN;
-        const double Fs = u < 3.0 ? muN * (u - u * u / 3.0 + u * u * u / 27.0) : muN;
-        const double k = Fs / F;
-        out.Fx *= k;
-        out.Fy *= k;
-        out.Mz *= k;
-      }
-    }
-    return out;
+  // The geometry's creep coefficients (read by the model "coefficients" only):
+  // prescribed at N_ref, else the table's C11, C22, C23 (no C33 in the tables,
+  // physics-reference §13 item 1).
+  contact::GeometryCoefficients& k = in.coefficients;
+  if (opt_.f11 > 0) {
+    k.f11 = opt_.f11;
+    k.f22 = opt_.f22;
+    k.f23 = opt_.f23;
+    k.f33 = opt_.f33;
+    k.Fz_ref = Nref;
+  } else {
+    k.C11 = g.C11;
+    k.C22 = g.C22;
+    k.C23 = g.C23;
   }
+  k.shear_modulus = opt_.shear_modulus;
+  if (used) *used = in;
   return model_->solve(in, ws);
 }
 
 std::string WheelRailCoupling::describe() const {
   std::string s = opt_.tangential;
-  if (!model_) s += opt_.f11 > 0 ? " (prescribed creep coefficients)" : " (Kalker coefficients from the geometry)";
-  if (!model_ && opt_.saturation != "none") s += " + " + opt_.saturation + " saturation";
+  if (contact::find_tangential_model(opt_.tangential).geometry_coefficients) {
+    s += opt_.f11 > 0 ? " (prescribed creep coefficients)" : " (Kalker coefficients from the geometry)";
+    if (opt_.saturation != "none") s += " + " + opt_.saturation + " saturation";
+  }
   s += ", reduction " + contact::describe_reduction(opt_.reduction);
   if (!opt_.spin) s += ", spin creepage off";
   return s;

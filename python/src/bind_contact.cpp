@@ -156,6 +156,7 @@ py::list model_list() {
     d["name"] = e.name;
     d["description"] = e.description;
     d["tabulated"] = e.tabulated;
+    d["compared_by_default"] = e.compared_by_default();
     l.append(d);
   }
   return l;
@@ -214,7 +215,7 @@ py::dict mim_fields(double s1, double s2, bool curvatures, double Fz, double xi,
 }  // namespace
 
 void bind_contact(py::module_& m) {
-  m.def("tangential_models", &model_list, "Registered tangential (creep-force) models: name, description, tabulated");
+  m.def("tangential_models", &model_list, "Registered tangential (creep-force) models: name, description, tabulated, compared_by_default");
   m.def("_contact_solve", &solve_arrays, py::arg("model"), py::arg("curvatures"), py::arg("xi"), py::arg("eta"),
         py::arg("phi"), py::arg("s1"), py::arg("s2"), py::arg("Fz"), py::arg("E"), py::arg("nu"), py::arg("mu"),
         py::arg("V"), py::arg("k11"), py::arg("k22"), py::arg("k23"), py::arg("grid") = 0,

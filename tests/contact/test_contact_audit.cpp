@@ -106,7 +106,7 @@ TEST_CASE("contact audit: every registered model by default, bad input named", "
   o.mim_grid = 16;
   const auto r = audit_contacts(one, o);
   std::size_t expected = 0;
-  for (const auto& e : tangential_models()) expected += e.tabulated ? 0 : 1;
+  for (const auto& e : tangential_models()) expected += e.compared_by_default() ? 1 : 0;
   CHECK(r.models.size() == expected);
   CHECK_THROWS_AS(audit_contacts({}, o), railsim::InputError);
   ContactAuditOptions bad = o;

@@ -4,8 +4,8 @@
 // those states (a direct MIM call on each gives the same forces), the run's
 // model re-solved reproduces what the run used, the table (CSV) holds every
 // state x model with the errors against the reference, the summary's verdict
-// follows from the table, and the engine's "coefficients" mode enters with
-// the forces the run computed. Short runs and a coarse reference grid keep it
+// follows from the table, and the model on the geometry's coefficients
+// ("coefficients") is re-solved with the run's law. Short runs and a coarse reference grid keep it
 // quick (the physics of the errors is tested in tests/contact/test_contact_audit.cpp).
 #include <catch2/catch.hpp>
 
@@ -62,9 +62,9 @@ TEST_CASE("contact audit of a run: reference, reproduction, table and verdict", 
     CHECK(std::abs(f.Fy - a.result.reference[s].Fy) <= 1e-9 * muN);
     CHECK(std::abs(f.Mz - a.result.reference[s].Mz) <= 1e-9 * muN * a.states[s].input.patch.b);
   }
-  // Every non-tabulated registered model is audited.
+  // Every registered model compared by default is audited.
   std::size_t expected = 0;
-  for (const auto& e : contact::tangential_models()) expected += e.tabulated ? 0 : 1;
+  for (const auto& e : contact::tangential_models()) expected += e.compared_by_default() ? 1 : 0;
   REQUIRE(a.result.models.size() == expected);
 
   // The table: one row per state x model, errors recomputed from its own columns.
@@ -115,8 +115,11 @@ TEST_CASE("contact audit of a run: reference, reproduction, table and verdict", 
   CHECK(std::filesystem::exists(out + "/contact_audit.png.json"));
 }
 
-TEST_CASE("contact audit of a run: the coefficients mode enters as run, bad options are named", "[analysis][audit][input]") {
-  // Kalker's coefficients from the RSGEO table with SHE saturation: no registry model, the run's forces are audited.
+TEST_CASE("contact audit of a run: the model on the geometry's coefficients is re-solved, bad options are named",
+          "[analysis][audit][input]") {
+  // Kalker's coefficients from the RSGEO table with SHE saturation (model
+  // "coefficients", saturation she): audited with the run's law and the
+  // coefficients each recorded input carries, so it reproduces the run exactly.
   Scenario sc = load_scenario(test::source_path("scenarios/cooperrider_car.yaml"));
   sc.duration = 0.1;
   ScenarioRunOptions o;
@@ -125,18 +128,26 @@ TEST_CASE("contact audit of a run: the coefficients mode enters as run, bad opti
   const ScenarioRunResult r = run_scenario(sc, o);
   REQUIRE(r.audited);
   const auto& a = r.contact_audit;
-  CHECK(a.run_model == "coefficients (as run)");
+  CHECK(a.run_model == "coefficients");
   const int k = a.result.find(a.run_model);
   REQUIRE(k >= 0);
-  CHECK(std::isnan(a.result.models[static_cast<std::size_t>(k)].mean_cost_ns));
-  CHECK(std::isnan(a.reproduction));
+  CHECK(std::isfinite(a.result.models[static_cast<std::size_t>(k)].median_cost_ns));
+  CHECK(a.reproduction == 0.0);
+  std::size_t with_table_coefficients = 0;
   for (std::size_t s = 0; s < a.states.size(); ++s) {
     const auto& f = a.result.forces[static_cast<std::size_t>(k)][s];
     CHECK(f.Fx == a.states[s].forces.Fx);
+    CHECK(f.Fy == a.states[s].forces.Fy);
+    with_table_coefficients += a.states[s].input.coefficients.C11 > 0 ? 1 : 0;
     const double e = std::hypot(f.Fx - a.result.reference[s].Fx, f.Fy - a.result.reference[s].Fy) /
                      (a.states[s].input.material.mu * a.states[s].input.patch.Fz);
     CHECK(a.result.errors[static_cast<std::size_t>(k)][s] == Approx(e).epsilon(1e-12));
   }
+  CHECK(with_table_coefficients == a.states.size());
+  // Only the run's model beyond the ones compared by default.
+  std::size_t expected = 1;
+  for (const auto& e : contact::tangential_models()) expected += e.compared_by_default() ? 1 : 0;
+  CHECK(a.result.models.size() == expected);
 
   // Bad options fail before the run.
   ScenarioRunOptions bad;

@@ -263,3 +263,52 @@ TEST_CASE("MIM table on a full disk: the build log and the table file name the f
   CHECK(saved.find("mim_table: " + dir + "/t.bin: write failed (No space left on device)") != std::string::npos);
   CHECK(std::filesystem::is_character_file("/dev/full"));
 }
+
+TEST_CASE("MIM table files keep their format: a file written to the documented layout loads, saves back "
+          "byte for byte, and the cache names keep their hashes", "[mim_table][format]") {
+  // The layout of mim_table.hpp, written here without the library's writer:
+  // magic "RSMIMTAB", u32 format version 2, u32 length + solver id, f64 nu,
+  // i32 grid, f64 tolerance, four axes (u32 count + f64 nodes), u64 value
+  // count, f64 values, u64 FNV-1a of every preceding byte.
+  const MimTableSpec s = small_spec();
+  std::string b = "RSMIMTAB";
+  const auto put = [&b](const auto& v) { b.append(reinterpret_cast<const char*>(&v), sizeof v); };
+  const auto put_axis = [&](const std::vector<double>& v) {
+    put(static_cast<std::uint32_t>(v.size()));
+    for (double x : v) put(x);
+  };
+  put(std::uint32_t{2});
+  const std::string id = "railsim-mim-steady-hertz-2";
+  put(static_cast<std::uint32_t>(id.size()));
+  b += id;
+  put(s.nu);
+  put(static_cast<std::int32_t>(s.grid));
+  put(s.tolerance);
+  for (const auto* axis : {&s.aob, &s.uxi, &s.ueta, &s.vpsi}) put_axis(*axis);
+  const std::size_t n = 3 * s.size();
+  put(static_cast<std::uint64_t>(n));
+  for (std::size_t i = 0; i < n; ++i) put(0.001 * static_cast<double>(i) - 0.2);
+  std::uint64_t h = 14695981039346656037ull;  // FNV-1a, 64 bit
+  for (const unsigned char c : b) h = (h ^ c) * 1099511628211ull;
+  put(h);
+
+  const std::string dir = railsim::test::temp_dir("mim_table_format");
+  {
+    std::ofstream f(dir + "/layout.bin", std::ios::binary | std::ios::trunc);
+    f.write(b.data(), static_cast<std::streamsize>(b.size()));
+  }
+  const auto t = MimTable::load(dir + "/layout.bin", s);
+  const std::size_t nj = s.uxi.size(), nk = s.ueta.size(), nl = s.vpsi.size();
+  for (const std::size_t idx : {std::size_t{0}, std::size_t{37}, s.size() - 1}) {
+    const std::size_t l = idx % nl, k = (idx / nl) % nk, j = (idx / (nl * nk)) % nj, i = idx / (nl * nk * nj);
+    CHECK(t->node(i, j, k, l)[1] == 0.001 * static_cast<double>(3 * idx + 1) - 0.2);
+  }
+  t->save(dir + "/again.bin");
+  std::ifstream f(dir + "/again.bin", std::ios::binary);
+  const std::string again((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  CHECK(again == b);
+  // The cache file names (mim_table_<hash>.bin) of tables built before the
+  // file was split into one file per job: same parameter hash, same file.
+  CHECK(MimTableSpec::standard().hash() == 0x72ea8affd8fca05bull);
+  CHECK(s.hash() == 0x8393c1de0fe40375ull);
+}
