@@ -130,7 +130,7 @@ std::vector<Candidate> make_candidates(const CompareArgs& a) {
   const bool explicit_list = !names.empty();
   if (!explicit_list)
     for (const auto& e : contact::tangential_models())
-      if (!e.tabulated) names.emplace_back(e.name);  // mim_table: below, when cached
+      if (e.compared_by_default()) names.emplace_back(e.name);  // mim_table: below, when cached
   std::set<std::string> seen;
   for (const auto& n : names)
     if (!seen.insert(n).second) throw InputError("--models: model '" + n + "' listed twice");

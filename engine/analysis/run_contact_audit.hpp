@@ -32,7 +32,7 @@
 
 #include "contact/contact_audit.hpp"
 #include "engine/analysis/contact_state_sample.hpp"
-#include "engine/wheel_rail_coupling.hpp"
+#include "engine/wheel_rail/wheel_rail_coupling.hpp"
 #include "results/chart.hpp"
 #include "results/json_writer.hpp"
 
