@@ -17,7 +17,7 @@
 #include <string>
 
 #include "engine/analysis/critical_speed.hpp"
-#include "engine/scenario.hpp"
+#include "engine/io/scenario.hpp"
 
 namespace {
 

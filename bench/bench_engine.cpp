@@ -19,7 +19,7 @@
 #include <string>
 
 #include "config/yaml_input.hpp"
-#include "engine/scenario.hpp"
+#include "engine/io/scenario.hpp"
 #include "engine/simulation.hpp"
 #include "engine/system.hpp"
 

@@ -8,9 +8,9 @@
 
 #include "contact/geometry/contact_table.hpp"
 #include "contact/geometry/semi_hertz.hpp"
-#include "engine/geometry_table.hpp"
-#include "engine/profile_geometry.hpp"
-#include "engine/strip_patches.hpp"
+#include "engine/wheel_rail/geometry_table.hpp"
+#include "engine/wheel_rail/profile_geometry.hpp"
+#include "engine/wheel_rail/strip_patches.hpp"
 
 using namespace railsim::contact;
 
@@ -116,7 +116,7 @@ static void BM_StripsWithYaw(benchmark::State& state) {
 BENCHMARK(BM_StripsWithYaw);
 
 // The engine's whole normal-contact job per wheel and right-hand side on the
-// profiles geometry (engine/wheelset_contact.cpp): the strips that can carry
+// profiles geometry (engine/wheel_rail/wheelset_contact.cpp): the strips that can carry
 // load and the wheel's loads and patches. Lateral model: strips up to a
 // 0.3 mm gap, then the approach that carries the wheel load (40 kN, the
 // coach's static wheel load); full model: strips up to the approach (0.05 mm

@@ -18,7 +18,7 @@
 #include "engine/analysis/run_history.hpp"
 #include "engine/analysis/run_safety.hpp"
 #include "engine/analysis/track_zones.hpp"
-#include "engine/scenario.hpp"
+#include "engine/io/scenario.hpp"
 #include "engine/simulation.hpp"
 #include "engine/track_input.hpp"
 

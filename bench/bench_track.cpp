@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <string>
 
-#include "tracks/psd_synthesis.hpp"
-#include "tracks/track_file.hpp"
+#include "track/psd_synthesis.hpp"
+#include "track/track_file.hpp"
 
 namespace {
 
@@ -17,11 +17,11 @@ std::string track_path(const char* file) {
 }
 
 void track_at(benchmark::State& state, const char* file) {
-  const railsim::tracks::Track t = railsim::tracks::load_track(track_path(file));
+  const railsim::track::Track t = railsim::track::load_track(track_path(file));
   double s = 0.0;
   const double step = 0.0937;
   for (auto _ : state) {
-    const railsim::tracks::TrackState st = t.at(s);
+    const railsim::track::TrackState st = t.at(s);
     benchmark::DoNotOptimize(st);
     s += step;
     if (s > t.length()) s = 0.0;
@@ -34,11 +34,11 @@ BENCHMARK_CAPTURE(track_at, straight_erri_low, "straight_erri_low.yaml");
 
 // Synthesis of one channel over `range(0)` km, ERRI low, 3-150 m.
 void psd_synthesis(benchmark::State& state) {
-  const auto sp = railsim::tracks::TrackSpectrum::named("erri_low");
-  railsim::tracks::SynthesisOptions o;
+  const auto sp = railsim::track::TrackSpectrum::named("erri_low");
+  railsim::track::SynthesisOptions o;
   o.s_end = 1000.0 * static_cast<double>(state.range(0));
   for (auto _ : state) {
-    auto x = railsim::tracks::synthesise_channel(sp, railsim::tracks::Channel::vertical, o);
+    auto x = railsim::track::synthesise_channel(sp, railsim::track::Channel::vertical, o);
     benchmark::DoNotOptimize(x.value.data());
   }
 }

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/scenario.hpp"
+#include "engine/io/scenario.hpp"
 #include "engine/simulation.hpp"
 #include "engine/system.hpp"
 #include "results/limit_cycle.hpp"

@@ -2,13 +2,13 @@
 // of amplitude A) at 1..6 mm, and optionally the rolling-radius-difference
 // curve: of wheel and rail profiles (railsim's contact search), or with
 // --table of a contact-geometry table file (RSGEO format, the engine's smoothed
-// reading of it, engine/geometry_table.hpp).
+// reading of it, engine/wheel_rail/geometry_table.hpp).
 #include <cstdio>
 
 #include "cli/commands.hpp"
 #include "cli/support_geometry.hpp"
 #include "contact/geometry/conicity.hpp"
-#include "engine/geometry_table.hpp"
+#include "engine/wheel_rail/geometry_table.hpp"
 #include "results/csv_writer.hpp"
 
 namespace railsim::cli {

@@ -22,7 +22,7 @@
 #include "core/output_lock.hpp"
 #include "engine/analysis/mode_sweep.hpp"
 #include "engine/linearisation.hpp"
-#include "engine/scenario.hpp"
+#include "engine/io/scenario.hpp"
 #include "results/chart.hpp"
 #include "results/csv_writer.hpp"
 #include "results/json_writer.hpp"

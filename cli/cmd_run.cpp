@@ -16,7 +16,7 @@
 #include "core/errors.hpp"
 #include "core/output_lock.hpp"
 #include "engine/analysis/scenario_run.hpp"
-#include "engine/scenario.hpp"
+#include "engine/io/scenario.hpp"
 
 namespace railsim::cli {
 

@@ -4,7 +4,7 @@
 // Columns (SI unless the name says mm): s, x, y, heading, curvature,
 // dcurvature, cant_mm, cant_angle, dcant_angle, the four irregularity channels
 // and the left/right rail positions in mm, their slopes (d/ds, dimensionless),
-// and with --speed-kmh the cant deficiency in mm. Signs: tracks/track.hpp.
+// and with --speed-kmh the cant deficiency in mm. Signs: track/track.hpp.
 #include <spdlog/spdlog.h>
 
 #include <array>
@@ -20,7 +20,7 @@
 #include "core/errors.hpp"
 #include "engine/analysis/track_sampling.hpp"
 #include "results/csv_writer.hpp"
-#include "tracks/track_file.hpp"
+#include "track/track_file.hpp"
 
 namespace railsim::cli {
 
@@ -36,7 +36,7 @@ struct TrackOptions {
 
 int run_track(const TrackOptions& o) {
   using config::format_number;
-  const tracks::Track track = tracks::load_track(o.track_file);
+  const track::Track track = track::load_track(o.track_file);
   const double s0 = o.from.value_or(0.0);
   const double s1 = o.to.value_or(track.length());
   if (!(o.step > 0.0) || !std::isfinite(o.step))
@@ -69,7 +69,7 @@ int run_track(const TrackOptions& o) {
   const std::optional<double> speed = o.speed_kmh ? std::optional<double>(*o.speed_kmh / 3.6) : std::nullopt;
   const auto write_row = [&](const engine::TrackSample& smp) {
     const double s = smp.s;
-    const tracks::TrackState& t = smp.state;
+    const track::TrackState& t = smp.state;
     const auto& irr = t.irregularity;
     std::size_t k = 0;
     for (double v : {s, t.x, t.y, t.heading, t.curvature, t.dcurvature, t.cant * 1e3, t.cant_angle, t.dcant_angle,
@@ -86,9 +86,9 @@ int run_track(const TrackOptions& o) {
   std::printf("track %s: %.3f m, %d segments, %zu irregularity components\n", track.name().c_str(), track.length(),
               track.alignment().segment_count(), track.irregularities().components().size());
   std::printf("sampled s = %.6g .. %.6g m every %.6g m: %ld rows -> %s\n", s0, s1, o.step, n, o.out.c_str());
-  for (tracks::Channel c : tracks::kAllChannels) {
-    const auto i = static_cast<std::size_t>(tracks::index(c));
-    std::printf("  %-12s max |r| = %8.3f mm   rms = %8.3f mm\n", tracks::channel_name(c), st.max_abs[i] * 1e3,
+  for (track::Channel c : track::kAllChannels) {
+    const auto i = static_cast<std::size_t>(track::index(c));
+    std::printf("  %-12s max |r| = %8.3f mm   rms = %8.3f mm\n", track::channel_name(c), st.max_abs[i] * 1e3,
                 st.rms[i] * 1e3);
   }
   return kExitSuccess;

@@ -27,7 +27,7 @@
 #include "contact/geometry/wheel_rail_geometry.hpp"
 #include "core/errors.hpp"
 #include "engine/analysis/wheelset_contact_cases.hpp"
-#include "engine/scenario.hpp"
+#include "engine/io/scenario.hpp"
 #include "results/csv_writer.hpp"
 
 namespace railsim::cli {

@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "config/yaml_input.hpp"
-#include "engine/scenario.hpp"
+#include "engine/io/scenario.hpp"
 
 namespace railsim::cli {
 
@@ -41,7 +41,7 @@ struct LoadedScenario {
   config::InputNode root;  // the YAML tree after the overrides
 };
 
-// Read `path`, apply the overrides in order, load the scenario (engine/scenario.hpp).
+// Read `path`, apply the overrides in order, load the scenario (engine/io/scenario.hpp).
 LoadedScenario load_scenario_with_overrides(const std::string& path, const std::vector<ScenarioOverride>& overrides);
 
 // Rethrow an InputError about an overridden key with the option in front (otherwise unchanged).

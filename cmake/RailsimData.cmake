@@ -1,7 +1,7 @@
 # The data railsim ships, staged into <build>/share/railsim (so programs in the
 # build tree find it as the installed ones find <prefix>/share/railsim) and
 # installed there. Layout of the data folder (core/data_dir.hpp):
-#   profiles/   wheel and rail profiles (contact/geometry/profiles/)
+#   profiles/   wheel and rail profiles (the source folder profiles/)
 #   plots/      the chart script (results/plots/render_chart.py)
 #   vehicles/   vehicle files and contact tables (vehicles/)
 #   tracks/     track files (tracks/*.yaml)
@@ -12,7 +12,7 @@ set(RAILSIM_DATA_INSTALL_DIR ${CMAKE_INSTALL_DATADIR}/railsim)
 
 # folder in the data folder -> files (relative to the source root)
 set(_railsim_data_sets
-  "profiles|contact/geometry/profiles|*"
+  "profiles|profiles|*"
   "plots|results/plots|*.py"
   "vehicles|vehicles|*"
   "tracks|tracks|*.yaml"

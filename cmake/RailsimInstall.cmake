@@ -20,7 +20,7 @@ set(RAILSIM_CMAKE_INSTALL_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/railsim)
 install(TARGETS railsim RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT runtime)
 
 # --- libraries and the package configuration ---------------------------------
-set(_railsim_libs railsim_core railsim_config railsim_results railsim_contact railsim_tracks railsim_engine
+set(_railsim_libs railsim_core railsim_config railsim_results railsim_contact railsim_track railsim_engine
     railsim_analysis)
 foreach(lib ${_railsim_libs})
   string(REPLACE "railsim_" "" short ${lib})

@@ -4,10 +4,10 @@ cmake_policy(SET CMP0057 NEW)
 # <railsim/folder/file.hpp>, so installed headers need only PREFIX/include on
 # the include path and no name of theirs (core/errors.hpp, ...) can collide
 # with another package's. Files are rewritten only when their content changes.
-set(_folders core config results contact tracks engine)
-set(_regex "#include \"((core|config|results|contact|tracks|engine)/[^\"]+)\"")
+set(_folders core config results contact track engine)
+set(_regex "#include \"((core|config|results|contact|track|engine)/[^\"]+)\"")
 file(GLOB_RECURSE _headers RELATIVE ${SOURCE_DIR} ${SOURCE_DIR}/core/*.hpp ${SOURCE_DIR}/config/*.hpp
-     ${SOURCE_DIR}/results/*.hpp ${SOURCE_DIR}/contact/*.hpp ${SOURCE_DIR}/tracks/*.hpp ${SOURCE_DIR}/engine/*.hpp)
+     ${SOURCE_DIR}/results/*.hpp ${SOURCE_DIR}/contact/*.hpp ${SOURCE_DIR}/track/*.hpp ${SOURCE_DIR}/engine/*.hpp)
 file(GLOB_RECURSE _generated RELATIVE ${GENERATED_DIR} ${GENERATED_DIR}/*.hpp)
 set(_wanted)
 foreach(pair IN LISTS _headers _generated)

@@ -64,7 +64,7 @@ struct Data {
   // (engine/analysis/run_history.hpp). Empty in other uses of Data.
   Eigen::VectorXd xdot;
   std::vector<std::unique_ptr<contact::TangentialWorkspace>> workspace;  // per wheel
-  // Scratch of the strip-wise normal contact (engine/wheelset_contact.cpp):
+  // Scratch of the strip-wise normal contact (engine/wheel_rail/wheelset_contact.cpp):
   // the strips of the two wheels of the wheelset being evaluated (25 kB each,
   // kept here so that the right-hand side does not clear them on the stack).
   std::vector<contact::StripSet> strips;

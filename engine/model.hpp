@@ -14,14 +14,14 @@
 #include <string>
 #include <vector>
 
-#include "engine/anti_roll_bar.hpp"
-#include "engine/bump_stop.hpp"
-#include "engine/contact_geometry.hpp"
-#include "engine/rigid_body.hpp"
-#include "engine/spring_damper.hpp"
+#include "engine/elements/anti_roll_bar.hpp"
+#include "engine/elements/bump_stop.hpp"
+#include "engine/wheel_rail/contact_geometry.hpp"
+#include "engine/elements/rigid_body.hpp"
+#include "engine/elements/spring_damper.hpp"
 #include "engine/track_frame.hpp"
-#include "engine/wheel_rail_coupling.hpp"
-#include "engine/yaw_damper.hpp"
+#include "engine/wheel_rail/wheel_rail_coupling.hpp"
+#include "engine/elements/yaw_damper.hpp"
 
 namespace railsim::engine {
 

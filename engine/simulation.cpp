@@ -10,7 +10,7 @@
 #include <cmath>
 
 #include "engine/system.hpp"
-#include "engine/wear_number.hpp"
+#include "engine/wheel_rail/wear_number.hpp"
 
 namespace railsim::engine {
 namespace {

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "engine/data.hpp"
-#include "engine/integrator.hpp"
+#include "engine/integrators/integrator.hpp"
 #include "engine/model.hpp"
 
 namespace railsim::engine {

@@ -6,8 +6,8 @@
 #include <cstdio>
 
 #include "core/errors.hpp"
-#include "engine/strip_patches.hpp"
-#include "engine/wheelset_contact.hpp"
+#include "engine/wheel_rail/strip_patches.hpp"
+#include "engine/wheel_rail/wheelset_contact.hpp"
 
 namespace railsim::engine {
 namespace {

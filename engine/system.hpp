@@ -34,8 +34,8 @@ void rhs_or_throw(const Model& model, Data& data, double t, const double* x, dou
 
 }  // namespace railsim::engine
 
-#include "engine/integrator.hpp"
-#include "engine/jacobian_pattern.hpp"
+#include "engine/integrators/integrator.hpp"
+#include "engine/integrators/jacobian_pattern.hpp"
 
 namespace railsim::engine {
 

@@ -39,7 +39,7 @@
 #include <memory>
 #include <string>
 
-#include "engine/rigid_body.hpp"
+#include "engine/elements/rigid_body.hpp"
 
 namespace railsim::engine {
 

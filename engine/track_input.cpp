@@ -1,10 +1,10 @@
-// tracks::Track as an engine TrackReference; see track_input.hpp.
+// track::Track as an engine TrackReference; see track_input.hpp.
 #include "engine/track_input.hpp"
 
 namespace railsim::engine {
 
 void TrackInput::sample(double s, TrackSample& out) const {
-  const tracks::TrackState t = track_->at(s);
+  const track::TrackState t = track_->at(s);
   out.curvature = t.curvature;
   out.curvature_rate = t.dcurvature;
   out.cant = t.cant_angle;
@@ -24,7 +24,7 @@ void TrackInput::sample(double s, TrackSample& out) const {
 }
 
 void TrackInput::sample_alignment(double s, TrackSample& out) const {
-  const tracks::AlignmentState t = track_->alignment_at(s);
+  const track::AlignmentState t = track_->alignment_at(s);
   out = TrackSample{};
   out.curvature = t.curvature;
   out.curvature_rate = t.dcurvature;

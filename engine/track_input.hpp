@@ -1,4 +1,4 @@
-// The engine's view of a tracks::Track (tracks/track.hpp): curvature, cant
+// The engine's view of a track::Track (track/track.hpp): curvature, cant
 // angle and rail irregularities by distance, as a TrackReference
 // (track_frame.hpp). Sign conventions are the same in both libraries
 // (curvature > 0 turns left; cant angle > 0 raises the right rail; rails
@@ -8,20 +8,20 @@
 #include <memory>
 
 #include "engine/track_frame.hpp"
-#include "tracks/track.hpp"
+#include "track/track.hpp"
 
 namespace railsim::engine {
 
 class TrackInput final : public TrackReference {
  public:
-  explicit TrackInput(std::shared_ptr<const tracks::Track> track) : track_(std::move(track)) {}
+  explicit TrackInput(std::shared_ptr<const track::Track> track) : track_(std::move(track)) {}
   void sample(double s, TrackSample& out) const override;
   void sample_alignment(double s, TrackSample& out) const override;
   std::string describe() const override;
-  const tracks::Track& track() const { return *track_; }
+  const track::Track& track() const { return *track_; }
 
  private:
-  std::shared_ptr<const tracks::Track> track_;
+  std::shared_ptr<const track::Track> track_;
 };
 
 }  // namespace railsim::engine

@@ -13,7 +13,7 @@
 #include "core/errors.hpp"
 #include "engine/analysis/state_store.hpp"
 #include "engine/linearisation.hpp"
-#include "engine/rigid_body.hpp"
+#include "engine/elements/rigid_body.hpp"
 #include "engine/simulation.hpp"
 #include "results/limit_cycle.hpp"
 

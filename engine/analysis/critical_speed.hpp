@@ -28,7 +28,7 @@
 #include <vector>
 
 #include "engine/analysis/sweep_runner.hpp"
-#include "engine/scenario.hpp"
+#include "engine/io/scenario.hpp"
 
 namespace railsim::engine {
 
@@ -135,7 +135,7 @@ Scenario with_contact(const Scenario& scenario, const std::string& tangential_mo
                       const contact::ReductionFactors* reduction);
 
 // Copy of the scenario with the reduction `spec` (a layer's factors computed
-// for the scenario's nominal patch, cached in cache_dir; engine/scenario.hpp
+// for the scenario's nominal patch, cached in cache_dir; engine/io/scenario.hpp
 // apply_reduction) and, when tangential_model is not empty, that model.
 Scenario with_reduction(const Scenario& scenario, const contact::ReductionSpec& spec, const std::string& where,
                         const std::string& cache_dir = "", const std::string& tangential_model = "");

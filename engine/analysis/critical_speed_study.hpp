@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "engine/analysis/critical_speed.hpp"
-#include "engine/scenario.hpp"
+#include "engine/io/scenario.hpp"
 #include "results/json_writer.hpp"
 
 namespace railsim::engine {

@@ -1,7 +1,7 @@
 // Equivalent conicity of a scenario's wheel-rail geometry, for reports.
 //
 // Delta r(y) = r_left(y) - r_right(y) from the geometry's main contact point
-// at zero yaw (engine/contact_geometry.hpp: shift s toward a wheel, so the
+// at zero yaw (engine/wheel_rail/contact_geometry.hpp: shift s toward a wheel, so the
 // left wheel sees s = +y and the right wheel s = -y), put through
 // contact/geometry/conicity.hpp's EN 15302:2008 regression for a harmonic
 // lateral motion y = A sin(wt) (the same computation as the scenario's
@@ -11,7 +11,7 @@
 
 #include <vector>
 
-#include "engine/contact_geometry.hpp"
+#include "engine/wheel_rail/contact_geometry.hpp"
 
 namespace railsim::engine {
 

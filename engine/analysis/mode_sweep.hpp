@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "engine/linearisation.hpp"
-#include "engine/scenario.hpp"
+#include "engine/io/scenario.hpp"
 
 namespace railsim::engine {
 

@@ -29,7 +29,7 @@
 
 #include "contact/reduction.hpp"
 #include "engine/analysis/critical_speed.hpp"
-#include "engine/scenario.hpp"
+#include "engine/io/scenario.hpp"
 #include "results/chart.hpp"
 #include "results/json_writer.hpp"
 

@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "engine/track_frame.hpp"
-#include "engine/wear_number.hpp"
+#include "engine/wheel_rail/wear_number.hpp"
 
 namespace railsim::engine {
 

@@ -58,7 +58,7 @@
 #include "engine/analysis/safety_quantity.hpp"
 #include "engine/analysis/safety_settings.hpp"
 #include "engine/analysis/track_zones.hpp"
-#include "engine/contact_geometry.hpp"
+#include "engine/wheel_rail/contact_geometry.hpp"
 
 namespace railsim::engine {
 

@@ -7,7 +7,7 @@
 // for and the computed factors). Units SI unless a key says otherwise.
 #pragma once
 
-#include "engine/scenario.hpp"
+#include "engine/io/scenario.hpp"
 #include "results/json_writer.hpp"
 
 namespace railsim::engine {

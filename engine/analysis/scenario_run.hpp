@@ -36,7 +36,7 @@
 #include <vector>
 
 #include "engine/analysis/run_contact_audit.hpp"
-#include "engine/scenario.hpp"
+#include "engine/io/scenario.hpp"
 #include "engine/simulation.hpp"
 #include "results/json_writer.hpp"
 

@@ -8,11 +8,11 @@ namespace railsim::engine {
 
 double track_sample_count(double from, double to, double step) { return std::floor((to - from) / step + 1e-9) + 1.0; }
 
-TrackSamplingStats sample_track(const tracks::Track& track, double from, double to, double step,
+TrackSamplingStats sample_track(const track::Track& track, double from, double to, double step,
                                 std::optional<double> speed, const std::function<void(const TrackSample&)>& sample) {
   TrackSamplingStats st;
   st.rows = static_cast<long>(track_sample_count(from, to, step));
-  std::array<double, tracks::kChannelCount> sumsq{};
+  std::array<double, track::kChannelCount> sumsq{};
   TrackSample smp;
   for (long j = 0; j < st.rows; ++j) {
     smp.s = std::min(from + static_cast<double>(j) * step, to);

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "tracks/defects.hpp"
+#include "track/defects.hpp"
 
 namespace railsim::engine {
 
@@ -37,11 +37,11 @@ TrackZone zone_of_radius(double radius, const ZoneLimits& lim) {
   return TrackZone::very_small_radius_curve;
 }
 
-std::vector<TrackSection> track_sections(const tracks::Track& track, const ZoneLimits& lim) {
-  const tracks::Alignment& a = track.alignment();
+std::vector<TrackSection> track_sections(const track::Track& track, const ZoneLimits& lim) {
+  const track::Alignment& a = track.alignment();
   std::vector<TrackSection> out;
   for (int i = 0; i < a.segment_count(); ++i) {
-    const tracks::Segment& seg = a.segment(i);
+    const track::Segment& seg = a.segment(i);
     TrackSection s;
     s.kind = seg.kind();
     s.design_start = a.segment_start(i);
@@ -90,10 +90,10 @@ std::size_t section_at(const std::vector<TrackSection>& sections, double s) {
   return static_cast<std::size_t>(it - sections.begin());
 }
 
-std::vector<DefectRange> track_defects(const tracks::Track& track) {
+std::vector<DefectRange> track_defects(const track::Track& track) {
   std::vector<DefectRange> out;
   for (const auto& c : track.irregularities().components()) {
-    if (dynamic_cast<const tracks::CosineDefect*>(c.get()) || dynamic_cast<const tracks::TwistDefect*>(c.get()))
+    if (dynamic_cast<const track::CosineDefect*>(c.get()) || dynamic_cast<const track::TwistDefect*>(c.get()))
       out.push_back({c->s_begin(), c->s_end(), c->describe()});
   }
   return out;

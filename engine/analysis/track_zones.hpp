@@ -1,5 +1,5 @@
 // Track sections and zones of a run, from the track's alignment: every
-// alignment segment (tracks/segment.hpp) is a section; consecutive straight
+// alignment segment (track/segment.hpp) is a section; consecutive straight
 // segments are merged. Each section gets the zone of EN 14363 it belongs to:
 //   straight              straight segments, and circular curves with
 //                         R >= straight_min_radius (test zone 1, "straight
@@ -24,7 +24,7 @@
 #include <string>
 #include <vector>
 
-#include "tracks/track.hpp"
+#include "track/track.hpp"
 
 namespace railsim::engine {
 
@@ -62,7 +62,7 @@ struct DefectRange {
 TrackZone zone_of_radius(double radius, const ZoneLimits& limits = {});
 
 // Sections of the track's alignment (at least one).
-std::vector<TrackSection> track_sections(const tracks::Track& track, const ZoneLimits& limits = {});
+std::vector<TrackSection> track_sections(const track::Track& track, const ZoneLimits& limits = {});
 
 // One straight section covering everything (tracks without alignment data).
 std::vector<TrackSection> single_section(TrackZone zone = TrackZone::straight,
@@ -71,7 +71,7 @@ std::vector<TrackSection> single_section(TrackZone zone = TrackZone::straight,
 // Index of the section holding distance s (sections sorted, contiguous).
 std::size_t section_at(const std::vector<TrackSection>& sections, double s);
 
-// Isolated defects (tracks::CosineDefect, tracks::TwistDefect) of the track.
-std::vector<DefectRange> track_defects(const tracks::Track& track);
+// Isolated defects (track::CosineDefect, track::TwistDefect) of the track.
+std::vector<DefectRange> track_defects(const track::Track& track);
 
 }  // namespace railsim::engine

@@ -9,8 +9,8 @@
 #include "contact/geometry/strip_contact_table.hpp"
 #include "contact/hertz.hpp"
 #include "core/errors.hpp"
-#include "engine/creepages.hpp"
-#include "engine/strip_patches.hpp"
+#include "engine/wheel_rail/creepages.hpp"
+#include "engine/wheel_rail/strip_patches.hpp"
 
 namespace railsim::engine {
 

@@ -11,12 +11,12 @@
 //     phi is the rigid wheelset's roll with both wheels touching;
 //  2. per wheel the strips of its profile (every `strip` of arc length, the
 //     points of the contact locus) and the distributed normal contact of the
-//     vehicle models (engine/strip_patches.hpp): the wheel's vertical approach
+//     vehicle models (engine/wheel_rail/strip_patches.hpp): the wheel's vertical approach
 //     that carries Fz, its patches (separate runs of loaded strips) with their
 //     loads, positions, contact angles, rolling radii (height below the axle)
 //     and equivalent ellipses;
 //  3. per patch the steady-state creepages of the wheelset rolling at omega
-//     with speed V (engine/creepages.hpp: no rates), and the tangential model
+//     with speed V (engine/wheel_rail/creepages.hpp: no rates), and the tangential model
 //     chosen by name (contact/registry.hpp) on the patch;
 //  4. the forces of the wheel on the rail, summed over the patches, in
 //     railsim's track frame (x forward, y left, z up).

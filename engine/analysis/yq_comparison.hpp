@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/scenario.hpp"
+#include "engine/io/scenario.hpp"
 #include "results/chart.hpp"
 #include "results/json_writer.hpp"
 

@@ -22,7 +22,7 @@
 #include "engine/analysis/critical_speed.hpp"
 #include "engine/analysis/mode_sweep.hpp"
 #include "engine/analysis/scenario_run.hpp"
-#include "engine/scenario.hpp"
+#include "engine/io/scenario.hpp"
 #include "python/src/bindings.hpp"
 
 namespace py = pybind11;

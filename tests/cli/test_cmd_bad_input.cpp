@@ -2,7 +2,7 @@
 // bad command-line options: exit 2 and one message naming the file, line and
 // key, or the option, and the allowed range; legal but implausible inputs run
 // (exit 0) with a warning naming the value and the usual range. The library
-// readers' messages are checked in detail in tests/engine/test_bad_input.cpp.
+// readers' messages are checked in detail in tests/engine/io/test_bad_input.cpp.
 #include <catch2/catch.hpp>
 
 #include <unistd.h>

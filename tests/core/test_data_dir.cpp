@@ -26,7 +26,7 @@ TEST_CASE("the data folder is found relative to the binary", "[core][data_dir]")
   CHECK(fs::canonical(d).string().rfind(fs::canonical(RAILSIM_SOURCE_DIR).string() + "/share", 0) != 0);
   // The copies are the sources' files.
   CHECK(railsim::test::read_text((d / "profiles" / "MBench_S1002_v3.prw").string()) ==
-        railsim::test::read_text(railsim::test::source_path("contact/geometry/profiles/MBench_S1002_v3.prw")));
+        railsim::test::read_text(railsim::test::source_path("profiles/MBench_S1002_v3.prw")));
   CHECK(railsim::data_path("tracks") == d.string() + "/tracks");
 }
 

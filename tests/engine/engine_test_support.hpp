@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "engine/scenario.hpp"
+#include "engine/io/scenario.hpp"
 
 namespace railsim::test {
 

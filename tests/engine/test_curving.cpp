@@ -24,7 +24,7 @@
 
 #include "engine/analysis/curving.hpp"
 #include "engine/analysis/run_history.hpp"
-#include "engine/scenario.hpp"
+#include "engine/io/scenario.hpp"
 #include "engine/simulation.hpp"
 #include "engine_test_support.hpp"
 #include "test_support.hpp"

@@ -13,7 +13,7 @@
 
 #include "config/yaml_input.hpp"
 #include "engine/data.hpp"
-#include "engine/scenario.hpp"
+#include "engine/io/scenario.hpp"
 #include "engine/simulation.hpp"
 #include "engine/system.hpp"
 #include "test_support.hpp"

@@ -12,7 +12,7 @@
 #include "contact/registry.hpp"
 #include "core/errors.hpp"
 #include "engine/analysis/contact_state_sample.hpp"
-#include "engine/scenario.hpp"
+#include "engine/io/scenario.hpp"
 #include "engine/simulation.hpp"
 #include "test_support.hpp"
 

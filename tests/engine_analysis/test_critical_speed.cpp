@@ -14,7 +14,7 @@
 #include "engine/analysis/critical_speed.hpp"
 #include "config/yaml_input.hpp"
 #include "engine/linearisation.hpp"
-#include "engine/scenario.hpp"
+#include "engine/io/scenario.hpp"
 #include "test_support.hpp"
 
 using namespace railsim::engine;

@@ -16,7 +16,7 @@
 #include "contact/registry.hpp"
 #include "core/errors.hpp"
 #include "engine/analysis/scenario_run.hpp"
-#include "engine/scenario.hpp"
+#include "engine/io/scenario.hpp"
 #include "json_support.hpp"
 #include "results/csv_writer.hpp"
 #include "test_support.hpp"

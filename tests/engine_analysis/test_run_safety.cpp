@@ -13,8 +13,8 @@
 
 #include "engine/analysis/curving.hpp"
 #include "engine/analysis/run_safety.hpp"
-#include "engine/conical_geometry.hpp"
-#include "engine/geometry_table.hpp"
+#include "engine/wheel_rail/conical_geometry.hpp"
+#include "engine/wheel_rail/geometry_table.hpp"
 #include "test_support.hpp"
 
 using namespace railsim::engine;

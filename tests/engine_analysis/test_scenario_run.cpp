@@ -6,7 +6,7 @@
 #include <string>
 
 #include "engine/analysis/scenario_run.hpp"
-#include "engine/scenario.hpp"
+#include "engine/io/scenario.hpp"
 #include "json_support.hpp"
 #include "test_support.hpp"
 

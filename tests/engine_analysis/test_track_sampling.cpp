@@ -10,12 +10,12 @@
 
 #include "engine/analysis/track_sampling.hpp"
 #include "test_support.hpp"
-#include "tracks/track_file.hpp"
+#include "track/track_file.hpp"
 
 using namespace railsim;
 
 TEST_CASE("track sampling: peak and RMS of a cosine defect, sample positions", "[track_sampling]") {
-  const tracks::Track track = tracks::load_track(test::source_path("tracks/straight_lateral_defect.yaml"));
+  const track::Track track = track::load_track(test::source_path("tracks/straight_lateral_defect.yaml"));
   const double A = 10e-3, lambda = 20.0, L = 200.0;
   std::vector<double> s;
   bool nan_deficiency = true;
@@ -23,7 +23,7 @@ TEST_CASE("track sampling: peak and RMS of a cosine defect, sample positions", "
     s.push_back(p.s);
     nan_deficiency = nan_deficiency && std::isnan(p.cant_deficiency);
   });
-  const auto lat = static_cast<std::size_t>(tracks::index(tracks::Channel::lateral));
+  const auto lat = static_cast<std::size_t>(track::index(track::Channel::lateral));
   CHECK(st.rows == 4001);
   REQUIRE(s.size() == 4001);
   CHECK(s.front() == 0.0);
@@ -31,7 +31,7 @@ TEST_CASE("track sampling: peak and RMS of a cosine defect, sample positions", "
   CHECK(nan_deficiency);
   CHECK(st.max_abs[lat] == Approx(A).epsilon(1e-6));  // s = 90 m is a sample
   CHECK(st.rms[lat] == Approx(std::sqrt(3.0 * A * A * lambda / (8.0 * L))).epsilon(1e-3));
-  const auto ver = static_cast<std::size_t>(tracks::index(tracks::Channel::vertical));
+  const auto ver = static_cast<std::size_t>(track::index(track::Channel::vertical));
   CHECK(st.max_abs[ver] == 0.0);
   // A step that does not divide the range: the samples stop at the last step inside it.
   std::vector<double> t;

@@ -7,20 +7,20 @@
 #include "config/yaml_input.hpp"
 #include "engine/analysis/track_zones.hpp"
 #include "test_support.hpp"
-#include "tracks/track_file.hpp"
+#include "track/track_file.hpp"
 
 using namespace railsim;
 using namespace railsim::engine;
 
 namespace {
-tracks::Track inline_track(const std::string& yaml) {
-  return tracks::load_track(config::InputNode::load_string(yaml, "inline.yaml"), ".", "inline");
+track::Track inline_track(const std::string& yaml) {
+  return track::load_track(config::InputNode::load_string(yaml, "inline.yaml"), ".", "inline");
 }
 }  // namespace
 
 TEST_CASE("zones of the R 300 m curve: straight, transition, small radius (zone 4), transition, straight",
           "[safety][zones]") {
-  const tracks::Track t = tracks::load_track(test::source_path("tracks/curve_R300.yaml"));
+  const track::Track t = track::load_track(test::source_path("tracks/curve_R300.yaml"));
   const auto s = track_sections(t);
   REQUIRE(s.size() == 5);
   const TrackZone expected[5] = {TrackZone::straight, TrackZone::transition, TrackZone::small_radius_curve,
@@ -62,14 +62,14 @@ TEST_CASE("zone boundaries by radius: 5000 / 600 / 250 m", "[safety][zones]") {
   CHECK(zone_of_radius(8000.0, wider) == TrackZone::large_radius_curve);
   CHECK(test_zone_label(TrackZone::small_radius_curve, 450.0) == "3");
   CHECK(test_zone_label(TrackZone::very_small_radius_curve, 200.0) == "5");
-  const tracks::Track t1000 = tracks::load_track(test::source_path("tracks/curve_R1000.yaml"));
+  const track::Track t1000 = track::load_track(test::source_path("tracks/curve_R1000.yaml"));
   CHECK(track_sections(t1000)[2].zone == TrackZone::large_radius_curve);
-  const tracks::Track tw = tracks::load_track(test::source_path("tracks/curve_twist.yaml"));
+  const track::Track tw = track::load_track(test::source_path("tracks/curve_twist.yaml"));
   CHECK(track_sections(tw)[2].zone == TrackZone::small_radius_curve);  // R = 250 m: still >= 250
 }
 
 TEST_CASE("consecutive straights merge; very small radius and defects are found", "[safety][zones]") {
-  const tracks::Track t = inline_track(
+  const track::Track t = inline_track(
       "name: t\nrail_spacing: 1.5\nsegments:\n"
       "  - {type: straight, length: 100}\n  - {type: straight, length: 50}\n"
       "  - {type: clothoid, length: 40}\n  - {type: circular, length: 100, radius: 200, direction: left}\n"
@@ -86,6 +86,6 @@ TEST_CASE("consecutive straights merge; very small radius and defects are found"
   CHECK(d[0].start == Approx(120.0));
   CHECK(d[0].end == Approx(130.0));
   // The ERRI track's random irregularities are not "defects".
-  CHECK(track_defects(tracks::load_track(test::source_path("tracks/straight_erri_low.yaml"))).empty());
+  CHECK(track_defects(track::load_track(test::source_path("tracks/straight_erri_low.yaml"))).empty());
   CHECK(single_section().size() == 1);
 }

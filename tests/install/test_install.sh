@@ -29,7 +29,7 @@ done
 ls "$prefix"/lib/python3/dist-packages/railsim/_railsim*.so > /dev/null || fail "Python module not installed"
 grep -q '^\.SH ENVIRONMENT' "$prefix/share/man/man1/railsim.1" || fail "man page without ENVIRONMENT section"
 # Installed headers include each other as <railsim/...> only.
-if grep -rnE '#include "(core|config|results|contact|tracks|engine)/' "$prefix/include/railsim" | head -3 | grep .; then
+if grep -rnE '#include "(core|config|results|contact|track|engine)/' "$prefix/include/railsim" | head -3 | grep .; then
   fail "installed headers include project headers without the railsim/ prefix"
 fi
 # No source or build path compiled into the installed binaries. Debug

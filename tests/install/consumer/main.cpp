@@ -6,7 +6,7 @@
 #include <railsim/contact/registry.hpp>
 #include <railsim/core/errors.hpp>
 #include <railsim/core/version.hpp>
-#include <railsim/engine/scenario.hpp>
+#include <railsim/engine/io/scenario.hpp>
 
 #include <cmath>
 #include <cstdio>

@@ -1,0 +1,413 @@
+// Scenario YAML reader; see scenario.hpp.
+#include "engine/io/scenario.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include <cmath>
+#include <filesystem>
+#include <limits>
+
+#include "contact/geometry/conicity.hpp"
+#include "contact/geometry/wheel_rail_geometry.hpp"
+#include "contact/hertz.hpp"
+#include "contact/reduction.hpp"
+#include "core/errors.hpp"
+#include "engine/equilibrium.hpp"
+#include "engine/wheel_rail/geometry_registry.hpp"
+#include "engine/wheel_rail/profile_geometry.hpp"
+#include "engine/wheel_rail/strip_patches.hpp"
+#include "engine/system.hpp"
+#include "engine/track_input.hpp"
+#include "engine/io/vehicle_file.hpp"
+#include "track/track_file.hpp"
+
+namespace railsim::engine {
+namespace {
+
+using config::InputNode;
+namespace fs = std::filesystem;
+
+// The allowed magnitude of an `initial:` deviation of state `idx`, its unit
+// and why: wheelset shifts within the contact geometry's lateral range, other
+// shifts within suspension travel (0.1 m), angles 0.1 rad (5.7 deg), rates
+// 5 m/s and 10 rad/s; other states only finite.
+struct InitialRange {
+  double limit = std::numeric_limits<double>::infinity();
+  std::string unit, why;
+};
+InitialRange initial_range(const Model& m, int idx) {
+  for (const auto& b : m.bodies)
+    for (int k = 0; k < kNumDof; ++k) {
+      if (b.q_index[k] == idx) {
+        const auto& geometry = b.wheelset >= 0 ? m.wheelsets[static_cast<std::size_t>(b.wheelset)].geometry : nullptr;
+        if (k == kLat && geometry) {
+          const double r = geometry->max_shift();
+          if (std::isfinite(r) && r > 0) return {r, "m", "the contact geometry's lateral range"};
+          return {0.05, "m", "a wheelset shift"};
+        }
+        if (k == kLat || k == kVert) return {0.1, "m", "suspension travel"};
+        return {0.1, "rad", "5.7 deg"};
+      }
+      if (b.v_index[k] == idx) return k == kLat || k == kVert ? InitialRange{5.0, "m/s", "a disturbance velocity"}
+                                                               : InitialRange{10.0, "rad/s", "a disturbance rate"};
+    }
+  return {};
+}
+
+CriticalSpeedSettings load_critical_speed_settings(const InputNode& n) {
+  n.allow_only({"v_min_kmh", "v_max_kmh", "v_step_kmh", "duration", "disturbance_mm", "small_disturbance_mm",
+                "threshold_mm", "continuation", "ramping"});
+  CriticalSpeedSettings c;
+  c.v_min_kmh = n.has("v_min_kmh") ? n.in_range("v_min_kmh", 0.0, 720.0, true) : c.v_min_kmh;
+  c.v_max_kmh = n.has("v_max_kmh") ? n.in_range("v_max_kmh", 0.0, 720.0, true) : c.v_max_kmh;
+  if (c.v_max_kmh <= c.v_min_kmh) n.fail("need v_min_kmh < v_max_kmh");
+  c.v_step_kmh = n.has("v_step_kmh") ? n.in_range("v_step_kmh", 0.0, 720.0, true) : c.v_step_kmh;
+  c.duration = n.has("duration") ? n.in_range("duration", 0.5, 600.0) : c.duration;
+  c.disturbance_mm = n.has("disturbance_mm") ? n.in_range("disturbance_mm", 0.01, 20.0) : c.disturbance_mm;
+  c.small_disturbance_mm =
+      n.has("small_disturbance_mm") ? n.in_range("small_disturbance_mm", 0.001, 20.0) : c.small_disturbance_mm;
+  c.threshold_mm = n.has("threshold_mm") ? n.in_range("threshold_mm", 0.001, 20.0) : c.threshold_mm;
+  if (auto cn = n.find("continuation")) c.continuation = cn->as_bool();
+  if (auto r = n.find("ramping")) {
+    r->allow_only({"v_start_kmh", "disturbance_mm", "deceleration"});
+    if (r->has("v_start_kmh")) c.ramp_start_kmh = r->in_range("v_start_kmh", 0.0, 720.0, true);
+    if (r->has("disturbance_mm")) c.ramp_disturbance_mm = r->in_range("disturbance_mm", 0.01, 20.0);
+    if (r->has("deceleration")) c.deceleration = r->in_range("deceleration", 0.001, 10.0);
+  }
+  return c;
+}
+
+}  // namespace
+
+Scenario load_scenario(const std::string& path) {
+  const auto root = InputNode::load_file(path);
+  Scenario s = load_scenario(root, fs::path(path).parent_path().string());
+  s.file = path;
+  if (s.name.empty()) s.name = fs::path(path).stem().string();
+  return s;
+}
+
+namespace {
+
+// Step: the track (a file or an inline map).
+std::shared_ptr<const track::Track> read_track(const InputNode& root, const std::string& base) {
+  const InputNode tn = root.at("track");
+  return std::make_shared<const track::Track>(tn.is_scalar() ? track::load_track(tn.as_existing_file(base))
+                                                              : track::load_track(tn, base, "track"));
+}
+
+// Step: speed profile, start distance, duration and output sampling.
+void read_motion(const InputNode& root, double track_length, Scenario& sc) {
+  Model& m = sc.model;
+  if (root.has("speed") == root.has("speed_kmh")) root.fail("give exactly one of 'speed' [m/s] or 'speed_kmh'");
+  m.speed.v0 =
+      root.has("speed") ? root.in_range("speed", 0.0, 200.0, true) : root.in_range("speed_kmh", 0.0, 720.0, true) / 3.6;
+  m.speed.accel = root.has("acceleration") ? root.in_range("acceleration", -kMaxAcceleration, kMaxAcceleration) : 0.0;
+  if (root.has("start_distance")) {
+    // Outside [0, length] the track is an extrapolation of its end (no
+    // irregularities): a run there would not be a run on the track given.
+    const double len = track_length;
+    const InputNode sd = root.at("start_distance");
+    const double s0 = sd.as_number();
+    if (!(s0 >= 0.0 && s0 <= len))
+      sd.fail("expected a number in [0, " + config::format_number(len) + "] (the track's defined length [m]; got " +
+              config::format_number(s0) + ")");
+    m.speed.s0 = s0;
+  }
+  sc.duration = root.positive("duration");
+  if (m.speed.accel < 0 && m.speed.speed(sc.duration) <= 0)
+    root.at("acceleration").fail("the speed would reach zero before the end of the run");
+  sc.output_interval = root.has("output_interval") ? root.in_range("output_interval", 0.0, sc.duration, true) : 0.01;
+  // Bounded output: the run keeps every sample in memory (RunHistory) and writes it (channels.csv).
+  const double samples = std::floor(sc.duration / sc.output_interval) + 1.0;
+  if (samples > kMaxOutputSamples) {
+    const InputNode where = root.has("output_interval") ? root.at("output_interval") : root.at("duration");
+    where.fail("duration " + config::format_number(sc.duration) + " s / output_interval " +
+               config::format_number(sc.output_interval) + " s gives " + config::format_number(samples) +
+               " output samples, more than the limit of " + config::format_number(kMaxOutputSamples) +
+               "; use a larger output_interval or a shorter duration");
+  }
+}
+
+// Step: the wheelset model and its options (model.hpp).
+void read_wheelset_model(const InputNode& root, Model& m) {
+  m.wheelset_model = root.choice_or("wheelset_model", "lateral", {"lateral", "full"}) == "full" ? WheelsetModel::full
+                                                                                                : WheelsetModel::lateral;
+  if (root.has("wheelset_roll")) m.kinematic_roll = root.at("wheelset_roll").as_choice({"kinematic", "none"}) == "kinematic";
+  // Axle rotation (lateral model): free unless the scenario imposes V / r0.
+  m.free_axle_rotation = root.choice_or("axle_rotation", "free", {"free", "imposed"}) == "free";
+  if (root.has("max_lateral_shift")) m.max_lateral_shift = root.in_range("max_lateral_shift", 0.0, 0.2, true);
+}
+
+// The contact section as read, before the model is finalised (the Hertz
+// patch needs the static wheel loads).
+struct ContactSection {
+  CouplingOptions options;
+  std::shared_ptr<const ContactGeometry> geometry;
+  bool hertz = false;           // conical wheels with curvatures: patch from Hertz at the static load
+  double static_approach = 7e-5;
+  contact::ReductionSpec reduction;
+  std::string reduction_where;
+};
+
+contact::Material read_material(const InputNode& mat, CouplingOptions& co, std::vector<std::string>& warnings) {
+  mat.allow_only({"E", "nu", "mu", "shear_modulus"});
+  contact::Material m = co.material;
+  if (mat.has("E")) m.E = mat.positive("E");
+  if (mat.has("nu")) m.nu = mat.in_range("nu", 0.0, 0.5, true, false);
+  if (mat.has("mu")) m.mu = mat.in_range("mu", 0.0, 2.0, true);
+  if (m.mu > 1.0) {
+    warnings.push_back(mat.at("mu").where() + ": key 'contact.material.mu': " + config::format_number(m.mu) +
+                       " is legal but implausible for wheel on rail (usual range 0.05-0.6; above 1 is beyond "
+                       "measured wheel-rail friction)");
+    spdlog::warn("{}", warnings.back());
+  }
+  co.shear_modulus = mat.has("shear_modulus") ? mat.positive("shear_modulus") : 0.0;
+  return m;
+}
+
+// Step: the contact section (geometry by registry, tangential model, material,
+// reductions, creep coefficients or patch).
+ContactSection read_contact(const InputNode& c, const std::string& base, Scenario& sc) {
+  c.allow_only({"geometry", "tangential", "saturation", "material", "reduction", "creep_coefficients", "patch",
+                "spin", "static_approach", "normal_damping"});
+  ContactSection cs;
+  CouplingOptions& co = cs.options;
+  if (auto mat = c.find("material")) co.material = read_material(*mat, co, sc.warnings);
+  const InputNode gn = c.at("geometry");
+  const GeometryKind& kind = find_geometry_kind(gn);
+  cs.geometry = kind.read(gn, GeometryReadContext{base, co.material, &sc.warnings});
+  co.tangential = c.string_or("tangential", "coefficients");
+  co.saturation = c.choice_or("saturation", "none", {"none", "she"});
+  if (auto r = c.find("reduction")) {
+    cs.reduction_where = r->where() + ": key 'reduction'";
+    cs.reduction = contact::parse_reduction_spec(r->as_string(), cs.reduction_where);
+    if (cs.reduction.resolved) co.reduction = cs.reduction.k;
+  }
+  if (auto f = c.find("creep_coefficients")) {
+    f->allow_only({"f11", "f22", "f23", "f33", "N_ref"});
+    co.f11 = f->positive("f11");
+    co.f22 = f->positive("f22");
+    co.f23 = f->has("f23") ? f->non_negative("f23") : 0.0;
+    co.f33 = f->has("f33") ? f->non_negative("f33") : 0.0;
+    co.N_ref = f->has("N_ref") ? f->non_negative("N_ref") : 0.0;
+  }
+  if (auto p = c.find("patch")) {
+    p->allow_only({"a", "b", "N_ref"});
+    co.patch_a = p->positive("a");
+    co.patch_b = p->positive("b");
+    co.N_ref = p->positive("N_ref");
+  }
+  if (auto sp = c.find("spin")) co.spin = sp->as_bool();
+  if (c.has("normal_damping")) co.normal_damping = c.in_range("normal_damping", 0.0, 1e8);
+  // Geometries that carry their own patch (table, profiles) need nothing more;
+  // conical wheels need coefficients, a patch or Hertz curvatures.
+  const ContactPointGeometry c0 = cs.geometry->main_point(0.0);
+  cs.hertz = !kind.carries_patch && c0.A > 0 && c0.B > 0;
+  if (!kind.carries_patch && co.patch_a <= 0 && !cs.hertz && !(co.tangential == "coefficients" && co.f11 > 0))
+    c.fail("conical wheels need 'creep_coefficients' (f11, f22, ...; tangential 'coefficients' only), 'patch' "
+           "(a, b, N_ref) or geometry 'curvatures' (A, B) for Hertz");
+  if (cs.hertz && (co.patch_a > 0 || c.has("static_approach")))
+    c.fail("give either geometry 'curvatures' (Hertz) or 'patch' / 'static_approach', not both");
+  if (c.has("static_approach")) cs.static_approach = c.in_range("static_approach", 0.0, 1e-2, true);
+  return cs;
+}
+
+// Step: integrator options (integrator.hpp), checked against the run's duration and output interval.
+void read_integrator(const InputNode& in, Scenario& sc) {
+  in.allow_only({"method", "rtol", "atol", "max_step", "initial_step", "min_step", "max_steps", "jacobian",
+                 "linear_solver", "max_order", "stability_limit_detection", "atol_contact_modes"});
+  auto& o = sc.integrator;
+  o.method = in.string_or("method", o.method);
+  // Below 1e-12 (about 5000 machine epsilons) the integrators cannot meet rtol
+  // in double precision and end in CV_TOO_MUCH_WORK after minutes.
+  if (in.has("rtol")) o.rtol = in.in_range("rtol", 1e-12, 0.1);
+  if (in.has("atol")) o.atol = in.in_range("atol", 0.0, 0.1, true);
+  if (auto ms = in.find("max_step")) {
+    // 0 would be read by the integrators as "no limit": refused, the key is omitted for that.
+    const double v = ms->as_number();
+    if (!(v > 0.0 && v <= sc.duration))
+      ms->fail("expected a step in (0, " + config::format_number(sc.duration) + "] s (the duration; got " +
+               config::format_number(v) + "); omit max_step to leave the step unlimited");
+    o.max_step = v;
+  }
+  if (auto is = in.find("initial_step")) {
+    const double v = is->as_number();
+    if (!(v >= 0.0 && v <= sc.duration))
+      is->fail("expected a step in [0, " + config::format_number(sc.duration) +
+               "] s (0: the integrator's choice; at most the duration; got " + config::format_number(v) + ")");
+    o.initial_step = v;
+  }
+  if (auto ms = in.find("min_step")) {
+    const double v = ms->as_number();
+    const double hi = o.max_step > 0.0 ? std::min(o.max_step, sc.output_interval) : sc.output_interval;
+    if (!(v >= 0.0 && v < hi))
+      ms->fail("expected a step in [0, " + config::format_number(hi) + ") s (below the output interval" +
+               std::string(o.max_step > 0.0 ? " and max_step" : "") + "; got " + config::format_number(v) + ")");
+    o.min_step = v;
+  }
+  if (in.has("max_steps")) o.max_steps = static_cast<long>(in.in_range("max_steps", 1, 1e9));
+  if (in.has("max_order")) o.max_order = static_cast<int>(in.in_range("max_order", 1, 5));
+  if (in.has("atol_contact_modes")) o.atol_contact_modes = in.in_range("atol_contact_modes", 0.0, 1.0);
+  if (auto sl = in.find("stability_limit_detection")) o.stability_limit_detection = sl->as_bool();
+  o.jacobian = in.choice_or("jacobian", o.jacobian, {"fd", "assembled"});
+  o.linear_solver = in.choice_or("linear_solver", o.linear_solver, {"auto", "klu", "dense", "band"});
+  bool known = false;
+  for (const auto& e : integrators()) known |= o.method == e.name;
+  if (!known) in.at("method").fail("unknown integrator '" + o.method + "' (known: " + integrator_names() + ")");
+  if (o.linear_solver == "klu" && o.jacobian == "fd")
+    in.at("jacobian").fail("'fd' works with the dense and band solvers only; 'klu' needs 'assembled'");
+}
+
+// Step (after finalize_model): the coupling with the patch at the static load
+// of the first wheel (Hertz: a, b ~ N^{1/3} for fixed A, B) and the static approach.
+void build_coupling(ContactSection& cs, Model& m) {
+  CouplingOptions& co = cs.options;
+  double q0 = cs.static_approach;
+  if (cs.hertz) {
+    const ContactPointGeometry c0 = cs.geometry->main_point(0.0);
+    const double Ns = m.wheelsets.front().static_load[0];
+    const contact::HertzPatch hp = contact::hertz_from_load(c0.A, c0.B, Ns, co.material);
+    co.patch_a = hp.a;
+    co.patch_b = hp.b;
+    co.N_ref = Ns;
+    q0 = hp.approach;
+  }
+  m.coupling = WheelRailCoupling(co);
+  for (auto& w : m.wheelsets) w.hertz_q0[0] = w.hertz_q0[1] = q0;
+}
+
+// Step: the nominal patch (centred wheelset, static load of the first wheel)
+// for layer factors and reports (Scenario::nominal_patch).
+contact::HertzPatch nominal_patch(const Scenario& sc, const ContactGeometry& geo) {
+  const Model& m = sc.model;
+  const CouplingOptions& co = m.coupling.options();
+  const ContactPointGeometry c0 = geo.main_point(0.0);
+  const double Ns = m.wheelsets.empty() ? 0.0 : m.wheelsets.front().static_load[0];
+  double a = 0.0, b = 0.0;
+  if (c0.semi_a > 0 && c0.N0 > 0) {
+    a = c0.semi_a * std::cbrt(Ns / c0.N0);
+    b = c0.semi_b * std::cbrt(Ns / c0.N0);
+  } else if (co.patch_a > 0 && co.N_ref > 0) {
+    a = co.patch_a * std::cbrt(Ns / co.N_ref);
+    b = co.patch_b * std::cbrt(Ns / co.N_ref);
+  }
+  double N = Ns;
+  contact::StripSet set;
+  if (!(a > 0 && b > 0) && Ns > 0 && geo.distributed() && geo.strips(0.0, 0.0, ProfileGeometry::kGapCutoff, set)) {
+    // Distributed contact (profiles): the most loaded patch of the centred
+    // wheel under its static vertical load, as the wheelset models form it
+    // (engine/wheel_rail/strip_patches.hpp: equivalent ellipse, normal load N).
+    StripLoads loads;
+    strip_approach_for_load(set, Ns, 0.0, geo.contact_modulus(), loads);
+    int best = -1;
+    for (int k = 0; k < loads.n; ++k)
+      if (best < 0 || loads.N[k] > loads.N[best]) best = k;
+    if (best >= 0 && loads.N[best] > 0) {
+      a = loads.patch[best].semi_a;
+      b = loads.patch[best].semi_b;
+      N = loads.N[best];
+    }
+  }
+  return a > 0 && b > 0 && N > 0 ? contact::hertz_from_semi_axes(a, b, N, sc.creep_material) : contact::HertzPatch{};
+}
+
+// Step: the start state, (quasi-)static (equilibrium.hpp) unless `start:
+// nominal`, with the user's `initial:` deviations on top, each range-checked.
+void read_start_state(const InputNode& root, Scenario& sc) {
+  const Model& m = sc.model;
+  sc.x0 = Eigen::VectorXd::Zero(m.n_states);
+  if (root.choice_or("start", "equilibrium", {"equilibrium", "nominal"}) == "equilibrium") {
+    const EquilibriumResult eq = static_equilibrium(m, 0.0);
+    if (eq.converged) {
+      sc.x0 = eq.x;
+    } else {
+      spdlog::warn("scenario '{}': no static equilibrium at the start ({}); starting from the nominal state", sc.name,
+                   eq.message);
+    }
+    sc.start_residual = eq.residual;
+  }
+  auto init = root.find("initial");
+  if (!init) return;
+  for (const auto& key : init->keys()) {
+    int idx = -1;
+    for (int i = 0; i < m.n_states; ++i)
+      if (m.state_names[i] == key) idx = i;
+    if (idx < 0) {
+      std::string known;
+      for (const auto& n : m.state_names) known += (known.empty() ? "" : ", ") + n;
+      init->at(key).fail("unknown state '" + key + "' (states: " + known + ")");
+    }
+    const double v = init->number(key);
+    const InitialRange r = initial_range(m, idx);
+    if (!(std::fabs(v) <= r.limit))
+      init->at(key).fail("expected a deviation in [-" + config::format_number(r.limit) + ", " +
+                         config::format_number(r.limit) + "] " + r.unit + " (" + r.why + ") (got " +
+                         config::format_number(v) + ")");
+    sc.x0[idx] += v;
+  }
+}
+
+}  // namespace
+
+Scenario load_scenario(const InputNode& root, const std::string& base) {
+  root.allow_only({"name", "description", "vehicle", "track", "speed", "speed_kmh", "acceleration", "start",
+                   "start_distance", "duration", "output_interval", "wheelset_model", "max_lateral_shift",
+                   "wheelset_roll", "axle_rotation", "contact", "integrator", "initial", "critical_speed",
+                   "running_safety"});
+  Scenario sc;
+  sc.name = root.string_or("name", "");
+  Model& m = sc.model;
+  load_vehicle(root.at("vehicle").as_existing_file(base), m);
+  const auto track = read_track(root, base);
+  m.track = std::make_shared<TrackInput>(track);
+  read_motion(root, track->length(), sc);
+  read_wheelset_model(root, m);
+  ContactSection contact = read_contact(root.at("contact"), base, sc);
+  const ContactGeometry& geo = *contact.geometry;
+  sc.geometry_description = geo.describe();
+  if (geo.max_shift() >= 3e-3)
+    sc.equivalent_conicity_3mm = contact::equivalent_conicity(
+        [&](double y) { return geo.main_point(y).rolling_radius - geo.main_point(-y).rolling_radius; }, 3e-3, 400);
+  for (auto& w : m.wheelsets) w.geometry = contact.geometry;
+  if (auto in = root.find("integrator")) read_integrator(*in, sc);
+
+  finalize_model(m);
+  build_coupling(contact, m);
+  const CouplingOptions& co = contact.options;
+  sc.creep_material = co.shear_modulus > 0
+                          ? contact::Material::from_shear_modulus(co.shear_modulus, co.material.nu, co.material.mu)
+                          : co.material;
+  sc.nominal_patch = nominal_patch(sc, geo);
+  if (contact.reduction.form != contact::ReductionForm::unset)
+    apply_reduction(sc, contact.reduction, contact.reduction_where);
+  if (auto cs = root.find("critical_speed")) sc.critical_speed = load_critical_speed_settings(*cs);
+  sc.running_safety = root.find("running_safety");
+  read_start_state(root, sc);
+  return sc;
+}
+
+void apply_reduction(Scenario& sc, contact::ReductionSpec spec, const std::string& where,
+                     const std::string& cache_dir) {
+  CouplingOptions o = sc.model.coupling.options();
+  o.material.mu = sc.creep_material.mu;  // the scenario's friction; only a layer's tau_c lowers it
+  sc.layer = {};
+  if (spec.form == contact::ReductionForm::layer) {
+    if (!(sc.nominal_patch.Fz > 0.0))
+      throw InputError(where + ": a third-body layer needs the scenario's contact patch (a geometry table or "
+                       "profiles with semi-axes, or 'patch' / 'curvatures' for conical wheels); this scenario "
+                       "prescribes creep coefficients only");
+    contact::Material m = sc.creep_material;
+    m.mu = o.material.mu;
+    sc.layer = contact::mim::third_body_reduction_cached(sc.nominal_patch, m, spec.layer, cache_dir);
+    spec.k = sc.layer.k;
+    spec.resolved = true;
+    contact::check_reduction(spec.k, where + " (factors computed for the layer)");
+    if (sc.layer.mu_limit > 0.0 && sc.layer.mu_limit < o.material.mu) o.material.mu = sc.layer.mu_limit;
+  }
+  o.reduction = spec.k;
+  sc.reduction = spec;
+  sc.model.coupling = WheelRailCoupling(o);
+}
+
+}  // namespace railsim::engine

@@ -1,0 +1,282 @@
+// Distributed normal contact of one wheel; see strip_patches.hpp.
+#include "engine/wheel_rail/strip_patches.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "contact/hertz.hpp"
+
+namespace railsim::engine {
+
+namespace {
+
+// cos(x): on treads and flange roots (|x| < 0.25 rad) its Taylor series to
+// x^12 (truncation below 1e-19, so within an ulp or two of std::cos at a
+// fraction of the cost); std::cos beyond.
+inline double cos_angle(double x) {
+  if (std::abs(x) >= 0.25) return std::cos(x);
+  const double x2 = x * x;
+  return 1.0 + x2 * (-1.0 / 2 + x2 * (1.0 / 24 + x2 * (-1.0 / 720 + x2 * (1.0 / 40320 + x2 * (-1.0 / 3628800 +
+                                                                                               x2 / 479001600.0)))));
+}
+
+// Per strip: normal penetration, modulus, its load share W_j and dW_j/dw.
+// Only strips that can carry load (and their neighbours, for the zero
+// crossing of a loaded segment) get the exact penetration: a strip with
+// (w - dphi a_j) - g_j <= 0 is unloaded whatever its angle, and its p_j is
+// left at that upper bound (never read unless a neighbour is loaded, in which
+// case it is made exact). `cos_cache` (optional, NaN where not yet known)
+// keeps cos(delta_j) across calls on the same strips.
+struct StripWork {
+  double p[contact::StripSet::kMax];
+  double k[contact::StripSet::kMax];
+  double cd[contact::StripSet::kMax];
+  double W[contact::StripSet::kMax];
+  double dW[contact::StripSet::kMax];
+  bool exact[contact::StripSet::kMax];
+};
+
+void shares(const contact::StripSet& s, int jb, int je, double w, double dphi_side, double Es, double* cos_cache,
+            StripWork& x) {
+  const int n = je;
+  auto make_exact = [&](int j, double u) {
+    const contact::StripPoint& q = s.s[j];
+    double c;
+    if (cos_cache) {
+      if (std::isnan(cos_cache[j])) cos_cache[j] = cos_angle(q.angle);
+      c = cos_cache[j];
+    } else {
+      c = cos_angle(q.angle);
+    }
+    x.cd[j] = c;
+    x.p[j] = u * c - q.gap;
+    x.k[j] = Es * q.f;
+    x.exact[j] = true;
+  };
+  bool any = false;
+  for (int j = jb; j < n; ++j) {
+    const contact::StripPoint& q = s.s[j];
+    const double u = w - dphi_side * q.lateral;
+    x.W[j] = 0.0;
+    x.dW[j] = 0.0;
+    if (u - q.gap > 0.0) {
+      make_exact(j, u);
+      any = true;
+    } else {
+      x.p[j] = u - q.gap;  // upper bound, <= 0
+      x.exact[j] = false;
+    }
+  }
+  if (!any) return;
+  for (int j = jb; j < n; ++j) {
+    if (x.exact[j]) continue;
+    const bool left = j > jb && x.exact[j - 1] && x.p[j - 1] > 0.0 && s.s[j].index == s.s[j - 1].index + 1;
+    const bool right = j + 1 < n && x.exact[j + 1] && x.p[j + 1] > 0.0 && s.s[j + 1].index == s.s[j].index + 1;
+    if (left || right) make_exact(j, w - dphi_side * s.s[j].lateral);
+  }
+  const double d = s.width;
+  for (int j = jb; j + 1 < n; ++j) {
+    const double pa = x.p[j], pb = x.p[j + 1];
+    if (!(pa > 0.0 || pb > 0.0)) continue;
+    if (s.s[j + 1].index != s.s[j].index + 1) continue;  // not neighbours
+    if (pa > 0.0 && pb > 0.0) {  // trapezoid, half to each end
+      x.W[j] += 0.5 * d * x.k[j] * pa;
+      x.W[j + 1] += 0.5 * d * x.k[j + 1] * pb;
+      x.dW[j] += 0.5 * d * x.k[j] * x.cd[j];
+      x.dW[j + 1] += 0.5 * d * x.k[j + 1] * x.cd[j + 1];
+    } else {  // triangle up to the zero crossing, to the loaded end
+      const int e = pa > 0.0 ? j : j + 1;
+      const double pe = x.p[e], po = x.p[e == j ? j + 1 : j];
+      const double c = pe / (pe - po);  // loaded fraction of the segment
+      // load = (c d / 2) k_e p_e; d/dw: c depends on w too.
+      const double ce = x.cd[e], co = x.cd[e == j ? j + 1 : j];
+      const double dc = (ce * (pe - po) - pe * (ce - co)) / ((pe - po) * (pe - po));
+      x.W[e] += 0.5 * c * d * x.k[e] * pe;
+      x.dW[e] += 0.5 * d * x.k[e] * (dc * pe + c * ce);
+    }
+  }
+}
+
+// Loads, vertical load and patches from the shares of strips [jb, je).
+void loads_from_shares(const contact::StripSet& s, int jb, int je, const StripWork& x, double phi_side,
+                       StripLoads& out, bool with_patches);
+
+}  // namespace
+
+void strip_loads(const contact::StripSet& s, double w, double dphi_side, double phi_side, double Es, StripLoads& out,
+                 bool with_patches) {
+  StripWork x;
+  shares(s, 0, s.n, w, dphi_side, Es, nullptr, x);
+  loads_from_shares(s, 0, s.n, x, phi_side, out, with_patches);
+}
+
+namespace {
+void loads_from_shares(const contact::StripSet& s, int jb, int je, const StripWork& x, double phi_side,
+                       StripLoads& out, bool with_patches) {
+  out.n = 0;
+  out.vertical = 0.0;
+  out.dvertical = 0.0;
+  int j = jb;
+  while (j < je) {
+    if (!(x.W[j] > 0.0)) {
+      ++j;
+      continue;
+    }
+    // A run of neighbouring loaded strips: one patch.
+    double N = 0, ang = 0, lat = 0, lead = 0, h = 0, A = 0, rw = 0, vert = 0, dvert = 0, pmax = 0;
+    int e = j;
+    for (;;) {
+      const contact::StripPoint& q = s.s[e];
+      const double W = x.W[e];
+      N += W;
+      ang += W * q.angle;
+      lat += W * q.lateral;
+      lead += W * q.lead;
+      h += W * q.height;
+      A += W * q.A;
+      pmax = std::max(pmax, x.p[e]);
+      rw += W * x.cd[e];
+      const double ct = phi_side == 0.0 ? x.cd[e] : std::cos(q.angle + phi_side);
+      vert += W * ct;
+      dvert += x.dW[e] * ct;
+      if (e + 1 < je && s.s[e + 1].index == q.index + 1 && x.W[e + 1] > 0.0) ++e;
+      else break;
+    }
+    out.vertical += vert;
+    out.dvertical += dvert;
+    if (with_patches && out.n < WheelGeometry::kMaxPoints) {
+      ContactPointGeometry& c = out.patch[out.n];
+      c = ContactPointGeometry{};
+      c.contact_angle = ang / N;
+      c.lateral = lat / N;
+      c.lead = lead / N;
+      c.rolling_radius = h / N;
+      c.A = A / N;
+      // Equivalent ellipse: the lateral curvature B_e of the parabola with
+      // the patch's largest penetration and width at half of it, w = 2
+      // sqrt(p_max / (2 B_e)); then Hertz's semi-axes for (A, B_e) at the
+      // approach p_max, a = alpha sqrt(p_max/A), b = beta sqrt(p_max/B_e)
+      // (exact for a quadratic gap).
+      const double half = 0.5 * pmax;
+      double width = 0.0;
+      for (int q = j; q <= e + 1 && q < je; ++q) {  // segments [q-1, q] inside the run and its edges
+        if (q == 0 || s.s[q].index != s.s[q - 1].index + 1) continue;
+        const double pa = x.p[q - 1] - half, pb = x.p[q] - half;
+        if (pa > 0 && pb > 0) width += s.width;
+        else if (pa > 0 || pb > 0) width += s.width * std::max(pa, pb) / std::abs(pa - pb);
+      }
+      if (c.A > 0.0 && width > 0.0 && pmax > 0.0) {
+        const double Be = 2.0 * pmax / (width * width);
+        double alpha = 0.0, beta = 0.0;
+        contact::StripContactTable::hertz_axis_factors(Be / c.A, alpha, beta);
+        c.semi_a = alpha * std::sqrt(pmax / c.A);
+        c.semi_b = beta * std::sqrt(pmax / Be);
+      }
+      out.N[out.n] = N;
+      out.rate_weight[out.n] = rw;
+      ++out.n;
+    } else if (with_patches) {  // more patches than slots: add to the last one's load
+      out.N[out.n - 1] += N;
+    }
+    j = e + 1;
+  }
+}
+}  // namespace
+
+double strip_approach_for_load(const contact::StripSet& s, double Q, double phi_side, double Es, StripLoads& out) {
+  // Z(w) is increasing and convex-ish (0 while nothing is loaded); Newton from
+  // the smallest gap, guarded by bisection on a bracket. cos(delta_j) is
+  // computed once per strip, and only for strips that can be loaded.
+  double cos_cache[contact::StripSet::kMax];
+  for (int j = 0; j < s.n; ++j) cos_cache[j] = std::numeric_limits<double>::quiet_NaN();
+  double vmin = 1e9;  // vertical approach at which the first strip touches (g_j / cos >= g_j)
+  for (int j = 0; j < s.n; ++j)
+    if (s.s[j].gap < vmin) {
+      cos_cache[j] = cos_angle(s.s[j].angle);
+      vmin = std::min(vmin, s.s[j].gap / cos_cache[j]);
+    }
+  StripWork x;
+  int jb = 0, je = s.n;  // strips evaluated: all, then those that can be loaded below the bracket's top
+  auto evaluate = [&](double w, bool with_patches) {
+    shares(s, jb, je, w, 0.0, Es, cos_cache, x);
+    loads_from_shares(s, jb, je, x, phi_side, out, with_patches);
+  };
+  double lo = vmin, hi = vmin + 1e-4;
+  for (int it = 0; it < 40; ++it) {  // grow the bracket until it carries Q
+    evaluate(hi, false);
+    if (out.vertical >= Q) break;
+    lo = hi;
+    hi = vmin + 2.0 * (hi - vmin);
+  }
+  // Below hi only strips with gap < hi can be loaded (p <= w - g): evaluate
+  // those and one neighbour on each side (the zero crossings).
+  {
+    int a = s.n, b = -1;
+    for (int j = 0; j < s.n; ++j)
+      if (s.s[j].gap < hi) {
+        a = std::min(a, j);
+        b = j;
+      }
+    if (b >= 0) {
+      jb = std::max(0, a - 1);
+      je = std::min(s.n, b + 2);
+    }
+  }
+  // The iterations need only the vertical load and its derivative: from
+  // compact copies of the strips in range (the same arithmetic as shares()
+  // and loads_from_shares() with dphi = 0).
+  const int nc = je - jb;
+  double cg[contact::StripSet::kMax], cc[contact::StripSet::kMax], ck[contact::StripSet::kMax],
+      cv[contact::StripSet::kMax], cp[contact::StripSet::kMax];
+  bool linked[contact::StripSet::kMax];  // strip jb+q and jb+q+1 are neighbours
+  for (int q = 0; q < nc; ++q) {
+    const contact::StripPoint& sp = s.s[jb + q];
+    if (std::isnan(cos_cache[jb + q])) cos_cache[jb + q] = cos_angle(sp.angle);
+    cg[q] = sp.gap;
+    cc[q] = cos_cache[jb + q];
+    ck[q] = 0.5 * s.width * Es * sp.f;
+    cv[q] = phi_side == 0.0 ? cc[q] : std::cos(sp.angle + phi_side);
+    linked[q] = q + 1 < nc && s.s[jb + q + 1].index == sp.index + 1;
+  }
+  auto vertical = [&](double w, double& V, double& dV) {
+    for (int q = 0; q < nc; ++q) cp[q] = w * cc[q] - cg[q];
+    V = 0.0;
+    dV = 0.0;
+    for (int q = 0; q + 1 < nc; ++q) {
+      const double pa = cp[q], pb = cp[q + 1];
+      if (!linked[q] || !(pa > 0.0 || pb > 0.0)) continue;
+      if (pa > 0.0 && pb > 0.0) {
+        V += ck[q] * pa * cv[q] + ck[q + 1] * pb * cv[q + 1];
+        dV += ck[q] * cc[q] * cv[q] + ck[q + 1] * cc[q + 1] * cv[q + 1];
+      } else {
+        const int e = pa > 0.0 ? q : q + 1, o = pa > 0.0 ? q + 1 : q;
+        const double pe = cp[e], po = cp[o], ce = cc[e], co = cc[o];
+        const double c = pe / (pe - po);
+        const double dc = (ce * (pe - po) - pe * (ce - co)) / ((pe - po) * (pe - po));
+        V += c * ck[e] * pe * cv[e];
+        dV += ck[e] * (dc * pe + c * ce) * cv[e];
+      }
+    }
+  };
+  // First guess: Hertz's N ~ (w - vmin)^{3/2} through the bracket's top.
+  double w = hi;
+  if (out.vertical > Q && out.vertical > 0.0) {
+    const double guess = vmin + (hi - vmin) * std::cbrt((Q / out.vertical) * (Q / out.vertical));
+    if (guess > lo && guess < hi) w = guess;
+  }
+  for (int it = 0; it < 80; ++it) {
+    double V, dV;
+    vertical(w, V, dV);
+    const double f = V - Q;
+    if (std::abs(f) <= 1e-10 * Q) break;
+    (f > 0.0 ? hi : lo) = w;
+    const double next = dV > 0.0 ? w - f / dV : 0.5 * (lo + hi);
+    w = (next > lo && next < hi) ? next : 0.5 * (lo + hi);
+    if (hi - lo < 1e-15) break;
+  }
+  evaluate(w, true);
+  return w;
+}
+
+}  // namespace railsim::engine

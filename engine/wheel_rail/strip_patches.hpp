@@ -1,0 +1,50 @@
+// Distributed normal contact of one wheel from its strips
+// (contact/geometry/strip_contact_table.hpp): normal loads and contact
+// patches for a given vertical approach of the wheel.
+//
+// Strip j (normal gap g_j at the rigid pose, contact angle delta_j, Winkler
+// modulus kappa_j = E* f_j) is penetrated by
+//   p_j = (w - side a_j dphi) cos(delta_j) - g_j             [m, normal]
+// (w the wheel's vertical approach from the rigid pose, dphi the roll beyond
+// the rigid pose's, a_j the strip's lateral position) and carries
+// kappa_j p_j per unit width while p_j > 0. Between neighbouring strips the
+// penetration is taken linear and integrated exactly up to its zero crossing
+// (trapezoid, or the triangle up to the edge), and each strip receives half
+// of each adjacent segment's load: W_j. The load of a wheel is thus
+// continuous and piecewise smooth in w and in the pose, also where a patch
+// opens, closes, or its load slides through the flange root (the rigid
+// contact point jumps there; the loads do not). For a quadratic gap this is
+// Hertz's N = K delta^{3/2} (the strips' f is calibrated so; up to the strip
+// discretisation).
+// Patches: runs of neighbouring loaded strips. Per patch the load N = sum W_j
+// and the load-weighted angle, lateral position, lead, rolling radius (height
+// below the axle) and longitudinal curvature A; its equivalent ellipse (for
+// the tangential models) is Hertz's for the patch's A and the lateral
+// curvature B_e of the parabola that has the patch's largest penetration p_max
+// and its width at p_max/2 (exact for a quadratic gap). Units SI.
+#pragma once
+
+#include "contact/geometry/strip_contact_table.hpp"
+#include "engine/wheel_rail/contact_geometry.hpp"
+
+namespace railsim::engine {
+
+struct StripLoads {
+  int n = 0;                                          // patches
+  ContactPointGeometry patch[WheelGeometry::kMaxPoints];  // semi-axes at the patch's load (N0 = N)
+  double N[WheelGeometry::kMaxPoints] = {};
+  double vertical = 0.0;    // sum over patches of N cos(delta + side phi_abs) (the wheel's vertical load)
+  double dvertical = 0.0;   // its derivative by w
+  double rate_weight[WheelGeometry::kMaxPoints] = {};  // per patch: sum W_j cos(delta_j) (damping)
+};
+
+// Loads of one wheel's strips; phi_side = side x the wheelset's roll (for the
+// vertical component), dphi_side = side x the roll beyond the rigid pose.
+void strip_loads(const contact::StripSet& strips, double w, double dphi_side, double phi_side, double Es,
+                 StripLoads& out, bool with_patches = true);
+
+// The vertical approach w at which the wheel carries the vertical load Q
+// (dphi = 0: the lateral model's roll is the rigid pose's), and the loads there.
+double strip_approach_for_load(const contact::StripSet& strips, double Q, double phi_side, double Es, StripLoads& out);
+
+}  // namespace railsim::engine

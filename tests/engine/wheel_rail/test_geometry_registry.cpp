@@ -1,0 +1,67 @@
+// The contact-geometry registry (engine/wheel_rail/geometry_registry.hpp): every kind is
+// read by name, each reader's geometry has the kind's physics (cones: the
+// rolling-radius difference 2 lambda y; the RSGEO table: its own radius and a
+// patch at its reference load; profiles: S1002 on UIC60 1:40 in tread contact
+// and the EN 15302 conicity railsim measured against CONTACT), and an unknown
+// kind names the file, line, key and the known kinds.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "config/yaml_input.hpp"
+#include "contact/geometry/conicity.hpp"
+#include "core/errors.hpp"
+#include "engine/wheel_rail/geometry_registry.hpp"
+#include "test_support.hpp"
+
+using namespace railsim;
+using config::InputNode;
+
+namespace {
+std::shared_ptr<const engine::ContactGeometry> read(const std::string& yaml) {
+  const auto doc = InputNode::load_string(yaml, "g.yaml");
+  return engine::read_geometry(doc.at("geometry"), {test::source_path("scenarios"), contact::Material{}, nullptr});
+}
+}  // namespace
+
+TEST_CASE("geometry registry: the three kinds by name, one row each", "[engine][geometry]") {
+  std::vector<std::string> names;
+  for (const auto& k : engine::geometry_kinds()) names.emplace_back(k.name);
+  CHECK(names == std::vector<std::string>{"conical", "table", "profiles"});
+  CHECK(engine::geometry_kind_names() == "'conical', 'table', 'profiles'");
+}
+
+TEST_CASE("geometry registry: conical wheels give 2 lambda y", "[engine][geometry]") {
+  const auto g = read("geometry: {type: conical, r0: 0.46, conicity: 0.2, l0: 0.75}\n");
+  for (double y : {-4e-3, 1e-3, 3e-3}) {
+    const double dr = g->main_point(y).rolling_radius - g->main_point(-y).rolling_radius;
+    CHECK(dr == Approx(2 * 0.2 * y).margin(1e-12));
+  }
+  CHECK(g->r0() == Approx(0.46));
+  CHECK(g->l0() == Approx(0.75));
+}
+
+TEST_CASE("geometry registry: the RSGEO table and the profiles", "[engine][geometry]") {
+  const auto t = read("geometry: {type: table, file: ../vehicles/contact_tables/RSGEO_S1002_UIC60_1in40.dat}\n");
+  CHECK(t->r0() == Approx(0.425).margin(1e-3));  // the Cooperrider car's wheels (cooperrider-car.md)
+  const auto c0 = t->main_point(0.0);
+  CHECK(c0.semi_a > 0);
+  CHECK(c0.N0 > 0);
+  const auto p = read("geometry: {type: profiles, wheel: S1002, rail: UIC60, inclination: 1/40, r0: 0.46}\n");
+  CHECK(p->distributed());
+  CHECK(p->r0() == Approx(0.46).margin(1e-4));  // the centred contact point lies 0.05 mm off the nominal circle
+  // Harmonic conicity at 3 mm of S1002 on UIC60 1:40 (railsim's own, issue 13: 0.185).
+  const double lambda = contact::equivalent_conicity(
+      [&](double y) { return p->main_point(y).rolling_radius - p->main_point(-y).rolling_radius; }, 3e-3, 400);
+  CHECK(lambda == Approx(0.185).margin(0.02));
+}
+
+TEST_CASE("geometry registry: an unknown kind names file, line, key and the kinds", "[engine][geometry][bad_input]") {
+  std::string msg;
+  try {
+    read("x: 1\ngeometry: {type: conic, r0: 0.46}\n");
+  } catch (const InputError& e) {
+    msg = e.what();
+  }
+  CHECK(msg == "g.yaml:2: key 'geometry.type': expected one of 'conical', 'table', 'profiles' (got 'conic')");
+}

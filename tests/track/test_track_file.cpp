@@ -1,0 +1,177 @@
+// Track files: every shipped track loads and matches its description; malformed
+// files give errors naming the file, line and segment (through the library and
+// through the railsim binary, exit code 2); `railsim track` samples a file.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <string>
+
+#include "config/yaml_input.hpp"
+#include "core/errors.hpp"
+#include "results/csv_writer.hpp"
+#include "test_support.hpp"
+#include "track/track_file.hpp"
+
+using namespace railsim::track;
+using railsim::test::source_path;
+
+namespace {
+
+Track load_text(const std::string& text) {
+  return load_track(railsim::config::InputNode::load_string(text, "t.yaml"), railsim::test::data_path("tracks"), "t");
+}
+
+std::string error_of(const std::string& text) {
+  try {
+    load_text(text);
+  } catch (const railsim::InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+const char* kCurve = R"(segments:
+  - {type: straight, length: 50}
+  - {type: clothoid, length: 30}
+  - {type: circular, length: 60, radius: 250, direction: left, cant_mm: 100}
+  - {type: clothoid, length: 30}
+  - {type: straight, length: 100}
+)";
+
+}  // namespace
+
+TEST_CASE("shipped track files load and match their descriptions", "[tracks][track_file]") {
+  {
+    const Track t = load_track(source_path("tracks/straight_lateral_defect.yaml"));
+    CHECK(t.length() == 2000.0);
+    CHECK(t.at(90.0).irregularity[Channel::lateral] == Approx(0.010).epsilon(1e-14));
+    CHECK(t.at(90.0).curvature == 0.0);
+    CHECK(t.at(500.0).irregularity[Channel::lateral] == 0.0);
+  }
+  {
+    const Track t = load_track(source_path("tracks/curve_twist.yaml"));
+    CHECK(t.length() == 270.0);
+    CHECK(t.alignment().segment_count() == 5);
+    CHECK(t.at(110.0).curvature == Approx(1.0 / 250).epsilon(1e-14));
+    CHECK(t.at(110.0).cant == Approx(0.100).epsilon(1e-14));
+    CHECK(t.at(65.0).cant == Approx(0.050).epsilon(1e-14));  // linear ramp in the entry clothoid
+    // Twist in the exit clothoid: design ramp -100 mm / 30 m plus the defect -18 mm / 3 m on the right rail.
+    const TrackState a = t.at(150.0), b = t.at(153.0);
+    CHECK(a.segment == 3);
+    const double design = (b.cant - a.cant) / 3.0;
+    const double defect = (b.irregularity[Channel::cross_level] - a.irregularity[Channel::cross_level]) / 3.0;
+    CHECK(design == Approx(-0.1 / 30).epsilon(1e-12));
+    CHECK(defect == Approx(-0.006).epsilon(1e-12));
+    CHECK(b.irregularity.left_vertical() == Approx(0.0).margin(1e-16));
+    CHECK(b.irregularity.right_vertical() == Approx(-0.018).epsilon(1e-12));
+  }
+  {
+    const Track t = load_track(source_path("tracks/straight_erri_low.yaml"));
+    CHECK(t.at(50.0).irregularity[Channel::vertical] == 0.0);  // before 'from'
+    double sum2 = 0;
+    int n = 0;
+    for (double s = 200; s < 2800; s += 0.5, ++n) sum2 += std::pow(t.at(s).irregularity[Channel::vertical], 2);
+    // One 2.6 km realisation: within 25 % of the 2.86 mm of the spectrum (3-150 m).
+    CHECK(std::sqrt(sum2 / n) * 1e3 == Approx(2.86).epsilon(0.25));
+  }
+  for (const char* f : {"tracks/curve_R300.yaml", "tracks/curve_R1000.yaml"}) {
+    const Track t = load_track(source_path(f));
+    CHECK(t.irregularities().empty());
+  }
+  CHECK(load_track(source_path("tracks/curve_R300.yaml")).at(300).cant == Approx(-0.150).epsilon(1e-14));
+  CHECK(load_track(source_path("tracks/curve_R1000.yaml")).at(500).curvature == Approx(1e-3).epsilon(1e-14));
+}
+
+TEST_CASE("malformed track files name the segment and the key", "[tracks][track_file]") {
+  std::string bad = kCurve;
+  bad.replace(bad.find("clothoid, length: 30"), 20, "clothoid, length: 0");
+  CHECK(error_of(bad) == "t.yaml:3: segments[1] (clothoid): key 'length': expected a positive number (got 0)");
+  CHECK_THAT(error_of(R"(segments:
+  - {type: straight, length: 50}
+  - {type: circular, length: 60, radius: 250, direction: left, cant_mm: 100, speed: 3}
+)"),
+             Catch::Contains("t.yaml:3: segments[1] (circular): key 'speed': unknown key"));
+  CHECK_THAT(error_of("segments:\n  - {type: spiral, length: 5}\n"),
+             Catch::Contains("segments[0] (spiral): key 'type': unknown segment type 'spiral'"));
+  CHECK_THAT(error_of("segments:\n  - {type: circular, length: 60, radius: 250, direction: up}\n"),
+             Catch::Contains("segments[0] (circular): key 'direction'") && Catch::Contains("left, right"));
+  CHECK_THAT(error_of("segments:\n  - {type: circular, length: 60, radius: 250, direction: left, cant_mm: 400}\n"),
+             Catch::Contains("segments[0] (circular): key 'cant_mm'"));
+  CHECK_THAT(error_of("segments:\n  - {type: circular, length: 60, direction: left}\n"),
+             Catch::Contains("segments[0] (circular)") && Catch::Contains("missing required key 'radius'"));
+  // Curvature / cant jumps and adjacent clothoids.
+  CHECK_THAT(error_of(R"(segments:
+  - {type: straight, length: 50}
+  - {type: circular, length: 60, radius: 250, direction: left}
+)"),
+             Catch::Contains("t.yaml:3: segments[1] (circular): starts with curvature 0.004") &&
+                 Catch::Contains("insert a clothoid"));
+  CHECK_THAT(error_of(R"(segments:
+  - {type: straight, length: 50}
+  - {type: clothoid, length: 30}
+  - {type: clothoid, length: 30}
+)"),
+             Catch::Contains("segments[1] (clothoid): a clothoid") && Catch::Contains("cannot be adjacent"));
+  CHECK_THAT(error_of("name: x\nsegmnts: []\n"), Catch::Contains("key 'segmnts': unknown key"));
+  CHECK_THAT(error_of("segments: []\n"), Catch::Contains("at least one segment"));
+  // Irregularities.
+  CHECK_THAT(error_of(std::string(kCurve) + "irregularities:\n  - {type: bump, start: 3}\n"),
+             Catch::Contains("irregularities[0] (bump): key 'type': unknown irregularity type 'bump'") &&
+                 Catch::Contains("defect, twist, psd, measured"));
+  CHECK_THAT(error_of(std::string(kCurve) +
+                      "irregularities:\n  - {type: defect, channel: sideways, start: 3, wavelength: 5, amplitude_mm: 1}\n"),
+             Catch::Contains("t.yaml:8: irregularities[0] (defect): key 'channel': unknown channel 'sideways'"));
+  CHECK_THAT(error_of(std::string(kCurve) +
+                      "irregularities:\n  - {type: defect, channel: lateral, start: 260, wavelength: 20, amplitude_mm: 1}\n"),
+             Catch::Contains("outside the track (0 .. 270 m)"));
+  CHECK_THAT(error_of(std::string(kCurve) + "irregularities:\n  - {type: psd, spectrum: erri_mid, seed: 1}\n"),
+             Catch::Contains("irregularities[0] (psd): key 'spectrum': unknown spectrum 'erri_mid'"));
+  CHECK_THAT(error_of(std::string(kCurve) + "irregularities:\n  - {type: psd, spectrum: fra_5, seed: -4}\n"),
+             Catch::Contains("key 'seed': expected a non-negative integer"));
+  CHECK_THAT(error_of(std::string(kCurve) + "irregularities:\n  - {type: measured, file: measured_unsorted.csv}\n"),
+             Catch::Contains("irregularities[0] (measured): key 'file':") &&
+                 Catch::Contains("measured_unsorted.csv:5:"));
+  CHECK_THAT(error_of(std::string(kCurve) +
+                      "irregularities:\n  - {type: measured, file: measured_good.csv, channels: [gauge]}\n"),
+             Catch::Contains("channel 'gauge' is not a column"));
+}
+
+TEST_CASE("a measured irregularity and a twist load from YAML", "[tracks][track_file]") {
+  const Track t = load_text(std::string(kCurve) + R"(irregularities:
+  - {type: measured, file: measured_good.csv, offset: 10, units: mm}
+  - {type: twist, start: 150, base_length: 3, amplitude_mm: 9, hold: 1}
+)");
+  CHECK(t.at(12.0).irregularity[Channel::lateral] == Approx(2.0e-3).epsilon(1e-14));
+  CHECK(t.at(153.5).irregularity[Channel::cross_level] == Approx(9e-3).epsilon(1e-14));
+  CHECK(t.irregularities().components().size() == 2);
+}
+
+TEST_CASE("railsim track samples a file and bad files exit with code 2 naming the segment", "[tracks][track_file][cli]") {
+  const std::string dir = railsim::test::temp_dir("tracks_cli");
+  const std::string out = dir + "/twist.csv";
+  const auto ok = railsim::test::run_railsim("track '" + source_path("tracks/curve_twist.yaml") + "' --out '" + out +
+                                             "' --step 0.5 --from 40 --to 200 --speed-kmh 60");
+  INFO(ok.output);
+  REQUIRE(ok.exit_code == 0);
+  const auto csv = railsim::results::read_csv(out);
+  CHECK(csv.rows.size() == 321);
+  CHECK(csv.number(0, "s") == 40.0);
+  CHECK(csv.number(140, "s") == 110.0);
+  CHECK(csv.number(140, "cant_mm") == Approx(100.0).epsilon(1e-9));
+  CHECK(csv.number(140, "curvature") == Approx(0.004).epsilon(1e-9));
+  // 11.8 V^2 / R - E at 60 km/h on R 250 with 100 mm: 69.9 mm excess.
+  CHECK(csv.number(140, "cant_deficiency_mm") == Approx(1.5 * std::pow(60 / 3.6, 2) / (9.81 * 250) * 1e3 - 100).epsilon(1e-6));
+  CHECK(csv.number(226, "cross_level_mm") == Approx(-18.0).epsilon(1e-9));  // s = 153 m
+
+  const std::string bad = dir + "/bad.yaml";
+  std::ofstream(bad) << "segments:\n  - {type: straight, length: 50}\n  - {type: clothoid, length: -3}\n";
+  const auto r = railsim::test::run_railsim("track '" + bad + "' --out '" + dir + "/bad.csv'");
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.output, Catch::Contains("bad.yaml:3: segments[1] (clothoid): key 'length': expected a positive number (got -3)"));
+  const auto missing = railsim::test::run_railsim("track '" + dir + "/nope.yaml' --out '" + dir + "/x.csv'");
+  CHECK(missing.exit_code == 2);
+  const auto step = railsim::test::run_railsim("track '" + source_path("tracks/curve_R300.yaml") + "' --out '" + dir +
+                                               "/x.csv' --step 0");
+  CHECK(step.exit_code == 2);
+}
