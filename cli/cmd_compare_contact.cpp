@@ -1,12 +1,10 @@
 // `railsim compare-contact CASES.yaml --out DIR`: every tangential contact model
 // against the exact solver, with its cost, on a file of contact cases (format of
-// `railsim contact`, support_contact_cases.hpp).
-//
-// Reference: the MIM boundary-element model ("mim", contact/mim/) on a fine grid
-// (--reference-grid elements across the minor axis, --reference-tolerance).
-// Errors: contact/force_error.hpp (fractions relative to the reference resultant
-// |F_ref|, Mz relative to |Mz_ref|; written in percent). Cost per call:
-// solve_timed (repeated calls, std::chrono::steady_clock, fastest window).
+// `railsim contact`, support_contact_cases.hpp). The comparison itself (reference,
+// errors, cost, Pareto front, failure map) is engine/analysis/contact_comparison.hpp;
+// this file chooses the models, writes the files and prints the table.
+// Reference: MIM on --reference-grid elements, --reference-tolerance; errors written
+// in percent.
 //
 // Outputs:
 //   DIR/comparison.csv        one row per model and case: forces, reference forces,
@@ -24,8 +22,6 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
-#include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -36,12 +32,11 @@
 
 #include "cli/commands.hpp"
 #include "cli/support_contact_cases.hpp"
-#include "contact/force_error.hpp"
-#include "contact/kalker_coefficients.hpp"
 #include "contact/mim_table.hpp"
 #include "contact/reduction.hpp"
 #include "contact/registry.hpp"
 #include "core/errors.hpp"
+#include "engine/analysis/contact_comparison.hpp"
 #include "results/chart.hpp"
 #include "results/csv_writer.hpp"
 #include "results/json_writer.hpp"
@@ -54,7 +49,6 @@ namespace {
 namespace fs = std::filesystem;
 using results::Json;
 
-constexpr double kFailureThreshold = 0.10;  // error of F above which the map marks a failure
 constexpr const char* kMimTable = "mim_table";
 
 struct CompareArgs {
@@ -76,17 +70,6 @@ struct Candidate {
   std::string description;
   std::unique_ptr<contact::TangentialModel> model;
   std::unique_ptr<contact::TangentialWorkspace> ws;
-};
-
-struct ModelStats {
-  double max_F = 0.0, sum_F = 0.0, sum_F2 = 0.0;
-  double max_Fx = 0.0, max_Fy = 0.0, max_Mz = 0.0;
-  double sum_cost_us = 0.0, max_cost_us = 0.0;
-  int cases = 0, invalid = 0;
-  int map_points = 0, map_failures = 0;
-  double mean_F() const { return cases ? sum_F / cases : NAN; }
-  double rms_F() const { return cases ? std::sqrt(sum_F2 / cases) : NAN; }
-  double mean_cost_us() const { return cases ? sum_cost_us / cases : NAN; }
 };
 
 std::vector<std::string> split_names(const std::string& list) {
@@ -167,53 +150,11 @@ std::vector<Candidate> make_candidates(const CompareArgs& a) {
   return out;
 }
 
-// One reference solve, timed once (the reference is slow; a single call suffices).
-TimedForces reference_solve(const contact::TangentialModel& ref, const contact::ContactInput& in,
-                            contact::TangentialWorkspace* ws, const std::string& what) {
-  const auto t0 = std::chrono::steady_clock::now();
-  TimedForces r;
-  r.forces = ref.solve(in, ws);
-  r.time_ns = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - t0).count();
-  if (!r.forces.valid) spdlog::warn("reference for {}: {}", what, r.forces.reason);
-  return r;
-}
-
 // --------------------------------------------------------------- failure map
 
-struct MapAxes {
-  std::vector<double> creepage;  // magnitude |(xi, eta)| [-], log-spaced
-  std::vector<double> spin;      // phi [1/m], linear from 0
-  double dir_x = 0.0, dir_y = 1.0;
-  double creepage_full_slip = 0.0;  // 3 mu Fz / (G c^2 C): full slip of the cubic laws
-  double spin_unit = 0.0;           // mu Fz / (G c^3 C23): normalised spin 1
-};
-
-MapAxes map_axes(const contact::ContactInput& in, const std::string& direction, int points) {
-  MapAxes m;
-  if (direction == "longitudinal") m.dir_x = 1.0, m.dir_y = 0.0;
-  if (direction == "diagonal") m.dir_x = m.dir_y = std::sqrt(0.5);
-  const auto& p = in.patch;
-  const double c = std::sqrt(p.a * p.b);
-  const double G = in.material.shear_modulus();
-  const auto C = contact::kalker_coefficients(p.a / p.b, in.material.nu);
-  const double C_dir = std::hypot(m.dir_x * C.C11, m.dir_y * C.C22);
-  const double muFz = in.material.mu * p.Fz;
-  m.creepage_full_slip = 3.0 * muFz / (G * c * c * C_dir);
-  m.spin_unit = muFz / (G * c * c * c * C.C23);
-  // Creepage from 3 % to 3x the full-slip creepage; spin up to normalised spin 2.
-  const double lo = 0.03 * m.creepage_full_slip, hi = 3.0 * m.creepage_full_slip;
-  for (int i = 0; i < points; ++i) {
-    const double t = points > 1 ? static_cast<double>(i) / (points - 1) : 0.0;
-    m.creepage.push_back(lo * std::pow(hi / lo, t));
-    m.spin.push_back(2.0 * m.spin_unit * t);
-  }
-  return m;
-}
-
-void failure_map(const CompareArgs& a, const ContactCase& base, std::vector<Candidate>& models,
-                 const contact::TangentialModel& ref, contact::TangentialWorkspace* ref_ws,
-                 std::vector<ModelStats>& stats, Json& summary) {
-  const MapAxes ax = map_axes(base.input, a.map_direction, a.map_points);
+void write_failure_map(const CompareArgs& a, const engine::ComparisonCase& base, const std::vector<Candidate>& models,
+                       const engine::ContactComparison& r, const engine::ContactComparisonOptions& o, Json& summary) {
+  const engine::FailureMapAxes& ax = r.map.axes;
   results::CsvWriter csv(a.out + "/failure_map.csv",
                          {"model", "creepage", "xi", "eta", "phi", "err_F_pct", "err_Mz_pct", "failed"});
   results::Chart chart;
@@ -228,25 +169,14 @@ void failure_map(const CompareArgs& a, const ContactCase& base, std::vector<Cand
     chart.series.push_back({m == 0 ? "error > 10 %" : "", {}, {}, "crosses", "tab:red", static_cast<int>(m)});
   }
   chart.lines.push_back({ax.creepage_full_slip, "full slip of the cubic laws, 3 mu Fz / (G c^2 C)", "0.5", true});
-  const auto t0 = std::chrono::steady_clock::now();
-  for (const double phi : ax.spin) {
-    for (const double s : ax.creepage) {
-      contact::ContactInput in = base.input;
-      in.creep = {s * ax.dir_x, s * ax.dir_y, phi};
-      const contact::ContactForces r = reference_solve(ref, in, ref_ws, "failure map").forces;
-      for (std::size_t m = 0; m < models.size(); ++m) {
-        const contact::ForceError e = contact::force_error(models[m].model->solve(in, models[m].ws.get()), r, in);
-        const bool failed = !(e.F <= kFailureThreshold);
-        ++stats[m].map_points;
-        stats[m].map_failures += failed ? 1 : 0;
-        auto& series = chart.series[2 * m + (failed ? 1 : 0)];
-        series.x.push_back(s);
-        series.y.push_back(phi);
-        csv.cell(models[m].name).cell(s).cell(in.creep.xi).cell(in.creep.eta).cell(phi);
-        csv.cell(100.0 * e.F).cell(100.0 * e.Mz).cell(failed).end_row();
-      }
-    }
+  for (const auto& p : r.map.points) {
+    auto& series = chart.series[2 * p.model + (p.failed ? 1 : 0)];
+    series.x.push_back(p.creepage);
+    series.y.push_back(p.creep.phi);
+    csv.cell(models[p.model].name).cell(p.creepage).cell(p.creep.xi).cell(p.creep.eta).cell(p.creep.phi);
+    csv.cell(100.0 * p.error.F).cell(100.0 * p.error.Mz).cell(p.failed).end_row();
   }
+  csv.close();
   results::draw(chart, a.out + "/failure_map.png");
   Json m = Json::object();
   m.set("case", base.id);
@@ -256,8 +186,8 @@ void failure_map(const CompareArgs& a, const ContactCase& base, std::vector<Cand
   m.set("spin_range_1_per_m", Json::array().push(ax.spin.front()).push(ax.spin.back()));
   m.set("full_slip_creepage", ax.creepage_full_slip);
   m.set("spin_normalisation_1_per_m", ax.spin_unit);
-  m.set("failure_threshold_pct", 100.0 * kFailureThreshold);
-  m.set("wall_time_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  m.set("failure_threshold_pct", 100.0 * o.failure_threshold);
+  m.set("wall_time_s", r.map.wall_time_s);
   m.set("axes", "x: |(xi, eta)| log-spaced from 0.03 to 3 times the full-slip creepage 3 mu Fz / (G c^2 C) "
                 "(C = C11, C22 or their root mean square for the diagonal); y: phi from 0 to 2 mu Fz / (G c^3 C23)");
   summary.set("failure_map", m);
@@ -266,8 +196,8 @@ void failure_map(const CompareArgs& a, const ContactCase& base, std::vector<Cand
 // --------------------------------------------------------------- main
 
 void speed_accuracy_chart(const CompareArgs& a, const std::vector<Candidate>& models,
-                          const std::vector<ModelStats>& stats, const std::vector<bool>& front,
-                          double reference_cost_us) {
+                          const std::vector<engine::ModelStats>& stats, const std::vector<bool>& front,
+                          double reference_cost_us, double failure_threshold) {
   // Errors below 0.01 % are drawn at 0.01 % (log axis).
   constexpr double kFloorPct = 1e-2;
   results::Chart c;
@@ -292,7 +222,7 @@ void speed_accuracy_chart(const CompareArgs& a, const std::vector<Candidate>& mo
   results::pareto_staircase(cost, err, front, step.x, step.y);
   c.series = {step, on, off};
   c.lines.push_back({reference_cost_us, "MIM reference (grid " + std::to_string(a.reference_grid) + ")", "0.5", true});
-  c.lines.push_back({100.0 * kFailureThreshold, "10 %", "r", false});
+  c.lines.push_back({100.0 * failure_threshold, "10 %", "r", false});
   results::draw(c, a.out + "/speed_vs_accuracy.png");
 }
 
@@ -302,73 +232,49 @@ int run_compare_contact(const CompareArgs& a) {
   if (models.empty()) throw InputError("--models: no model to compare");
   ContactCaseSet set = load_contact_cases(a.cases);
   if (!a.reduction.empty()) set_reduction(set, contact::parse_reduction(a.reduction, "--reduction"));
-  const ContactCase* map_case = &set.cases.front();
+  engine::ContactComparisonOptions o;
+  o.reference_grid = a.reference_grid;
+  o.reference_tolerance = a.reference_tolerance;
+  o.map_points = a.map_points;
+  o.map_direction = engine::parse_creep_direction(a.map_direction, "--map-direction");
   if (!a.map_case.empty()) {
-    map_case = nullptr;
+    bool found = false;
     std::string ids;
-    for (const auto& c : set.cases) {
-      if (c.id == a.map_case) map_case = &c;
-      ids += (ids.empty() ? "" : ", ") + c.id;
+    for (std::size_t i = 0; i < set.cases.size(); ++i) {
+      if (set.cases[i].id == a.map_case) o.map_case = i, found = true;
+      ids += (ids.empty() ? "" : ", ") + set.cases[i].id;
     }
-    if (!map_case) throw InputError("--map-case: no case '" + a.map_case + "' in " + a.cases + " (cases: " + ids + ")");
+    if (!found) throw InputError("--map-case: no case '" + a.map_case + "' in " + a.cases + " (cases: " + ids + ")");
   }
   std::error_code ec;
   fs::create_directories(a.out, ec);
   if (ec) throw InputError("--out " + a.out + ": cannot create the folder (" + ec.message() + ")");
 
-  contact::TangentialModelOptions ro;
-  ro.grid = a.reference_grid;
-  ro.tolerance = a.reference_tolerance;
-  const auto ref = contact::make_tangential_model("mim", ro);
-  const auto ref_ws = ref->make_workspace();
-
-  // Reference solutions.
-  spdlog::info("compare-contact: {} cases, reference MIM grid {} (tolerance {:g})", set.cases.size(),
-               a.reference_grid, a.reference_tolerance);
-  std::vector<TimedForces> reference;
-  std::vector<double> ref_us;
-  for (const auto& c : set.cases) {
-    reference.push_back(reference_solve(*ref, c.input, ref_ws.get(), "case '" + c.id + "'"));
-    ref_us.push_back(reference.back().time_ns * 1e-3);
-  }
-  // Median: the first solve on a new grid also sets up the solver.
-  std::vector<double> sorted_us = ref_us;
-  std::sort(sorted_us.begin(), sorted_us.end());
-  const double ref_cost_us = sorted_us[sorted_us.size() / 2];
+  std::vector<engine::ComparisonCase> cases;
+  for (const auto& c : set.cases) cases.push_back({c.id, c.input});
+  std::vector<engine::ComparedModel> compared;
+  for (const auto& m : models) compared.push_back({m.name, m.description, m.model.get(), m.ws.get()});
+  const engine::ContactComparison r = engine::compare_contact_models(cases, compared, o);
+  const double ref_cost_us = r.reference_median_cost_us;
 
   results::CsvWriter csv(a.out + "/comparison.csv",
                          {"model", "case", "a", "b", "Fz", "mu", "xi", "eta", "phi", "Fx", "Fy", "Mz", "Fx_ref",
                           "Fy_ref", "Mz_ref", "err_Fx_pct", "err_Fy_pct", "err_Mz_pct", "err_F_pct", "valid",
                           "reason", "cost_us", "ref_cost_us"});
-  std::vector<ModelStats> stats(models.size());
-  for (std::size_t m = 0; m < models.size(); ++m) {
-    spdlog::info("compare-contact: {} ({}/{})", models[m].name, m + 1, models.size());
-    auto& st = stats[m];
-    for (std::size_t i = 0; i < set.cases.size(); ++i) {
-      const auto& c = set.cases[i];
-      const TimedForces r = solve_timed(*models[m].model, c.input, models[m].ws.get());
-      const auto& f = r.forces;
-      const auto& g = reference[i].forces;
-      const contact::ForceError e = contact::force_error(f, g, c.input);
-      const double us = r.time_ns * 1e-3;
-      ++st.cases;
-      st.invalid += f.valid ? 0 : 1;
-      st.max_F = std::max(st.max_F, e.F);
-      st.sum_F += e.F;
-      st.sum_F2 += e.F * e.F;
-      st.max_Fx = std::max(st.max_Fx, e.Fx);
-      st.max_Fy = std::max(st.max_Fy, e.Fy);
-      st.max_Mz = std::max(st.max_Mz, e.Mz);
-      st.sum_cost_us += us;
-      st.max_cost_us = std::max(st.max_cost_us, us);
-      const auto& p = c.input.patch;
-      csv.cell(models[m].name).cell(c.id).cell(p.a).cell(p.b).cell(p.Fz).cell(c.input.material.mu);
-      csv.cell(c.input.creep.xi).cell(c.input.creep.eta).cell(c.input.creep.phi);
+  for (std::size_t m = 0; m < models.size(); ++m)
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+      const auto& in = cases[i].input;
+      const auto& f = r.results[m][i].forces;
+      const auto& e = r.results[m][i].error;
+      const auto& g = r.reference[i];
+      const auto& p = in.patch;
+      csv.cell(models[m].name).cell(cases[i].id).cell(p.a).cell(p.b).cell(p.Fz).cell(in.material.mu);
+      csv.cell(in.creep.xi).cell(in.creep.eta).cell(in.creep.phi);
       csv.cell(f.Fx).cell(f.Fy).cell(f.Mz).cell(g.Fx).cell(g.Fy).cell(g.Mz);
       csv.cell(100.0 * e.Fx).cell(100.0 * e.Fy).cell(100.0 * e.Mz).cell(100.0 * e.F);
-      csv.cell(f.valid).cell(f.reason).cell(us).cell(ref_us[i]).end_row();
+      csv.cell(f.valid).cell(f.reason).cell(r.results[m][i].cost_us).cell(r.reference_cost_us[i]).end_row();
     }
-  }
+  csv.close();
 
   Json summary = Json::object();
   summary.set("cases_file", a.cases);
@@ -386,12 +292,10 @@ int run_compare_contact(const CompareArgs& a) {
               "component differences over the same scale; err_Mz = |Mz - Mz_ref| / max(|Mz_ref|, 1e-2 mu Fz "
               "sqrt(ab)); in percent; relative to the reference resultant, not to mu Fz");
   summary.set("pareto_criteria", "mean cost per call [us] over the cases and max err_F over the cases");
+  if (r.has_map) write_failure_map(a, cases[o.map_case], models, r, o, summary);
 
-  if (a.map_points > 0) failure_map(a, *map_case, models, *ref, ref_ws.get(), stats, summary);
-
-  std::vector<double> cost, err;
-  for (const auto& s : stats) cost.push_back(s.mean_cost_us()), err.push_back(s.max_F);
-  const std::vector<bool> front = results::pareto_front(cost, err);
+  const std::vector<engine::ModelStats>& stats = r.stats;
+  const std::vector<bool>& front = r.pareto_front;
   Json list = Json::array();
   for (std::size_t m = 0; m < models.size(); ++m) {
     const auto& s = stats[m];
@@ -413,7 +317,7 @@ int run_compare_contact(const CompareArgs& a) {
   }
   summary.set("models", list);
   summary.write_file(a.out + "/summary.json");
-  speed_accuracy_chart(a, models, stats, front, ref_cost_us);
+  speed_accuracy_chart(a, models, stats, front, ref_cost_us, o.failure_threshold);
 
   std::printf("\nrailsim compare-contact: %zu cases of %s against MIM grid %d (median %.0f us/call)\n", set.cases.size(),
               a.cases.c_str(), a.reference_grid, ref_cost_us);

@@ -21,7 +21,6 @@
 // DIR/critical_speed_vs_k.png; each entry's sweep in its own sub-folder.
 #include <spdlog/spdlog.h>
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -36,6 +35,7 @@
 #include "core/output_lock.hpp"
 #include "engine/analysis/bifurcation_chart.hpp"
 #include "engine/analysis/critical_speed.hpp"
+#include "engine/analysis/critical_speed_study.hpp"
 #include "engine/analysis/reduction_study.hpp"
 #include "engine/analysis/scenario_record.hpp"
 #include "engine/analysis/sweep_runner.hpp"
@@ -99,12 +99,26 @@ CriticalSpeedArgs resolve_settings(CriticalSpeedArgs a, const engine::CriticalSp
   return a;
 }
 
-struct Outcome {
-  double critical = NAN, linear = NAN, wall = 0.0;
-  double fold_amplitude = NAN, fold_frequency = NAN;
-  std::vector<engine::BifurcationPoint> points;  // bifurcation sweeps only
-  engine::BifurcationOptions bifurcation;        // the sweep's settings
-};
+// The resolved settings in SI: the engine's units (km/h and mm stay on the command line).
+engine::CriticalSpeedStudySettings study_settings(const CriticalSpeedArgs& a) {
+  engine::CriticalSpeedStudySettings s;
+  s.method = engine::parse_critical_speed_method(a.method, "--method");
+  s.v_min = a.v_min_kmh / 3.6;
+  s.v_max = a.v_max_kmh / 3.6;
+  s.v_step = a.v_step_kmh / 3.6;
+  s.duration = a.duration;
+  s.large_disturbance = a.large * 1e-3;
+  s.small_disturbance = a.small * 1e-3;
+  s.threshold = a.threshold * 1e-3;
+  s.deceleration = a.deceleration;
+  s.up_branch = a.up_branch;
+  s.continuation = a.continuation == 1;
+  s.ramp_start = a.ramp_start_kmh / 3.6;
+  s.ramp_disturbance = a.ramp_disturbance * 1e-3;
+  s.ramp_start_source = a.ramp_start_source;
+  s.threads = a.threads;
+  return s;
+}
 
 std::string kmh(double v) {
   if (std::isnan(v)) return "none found";
@@ -113,132 +127,27 @@ std::string kmh(double v) {
   return buf;
 }
 
-engine::BifurcationOptions bifurcation_options(const CriticalSpeedArgs& a);
-engine::RampingOptions ramping_options(const CriticalSpeedArgs& a);
+void print_ramp_start(const CriticalSpeedArgs& a, const char* suffix) {
+  std::printf("ramping from %.1f km/h (%s) down to %.1f km/h at %.3g m/s^2%s\n", a.ramp_start_kmh,
+              a.ramp_start_source.c_str(), a.v_min_kmh, a.deceleration, suffix);
+}
 
-Outcome analyse(const engine::Scenario& sc, const CriticalSpeedArgs& a, const std::string& dir,
-                const engine::MpiContext& mpi, Json& summary) {
-  fs::create_directories(dir);
-  Outcome out;
-  const auto t0 = std::chrono::steady_clock::now();
-  const double v_lo = a.v_min_kmh / 3.6, v_hi = a.v_max_kmh / 3.6;
-  out.linear = engine::linear_critical_speed(sc, std::max(1.0, 0.25 * v_lo), 1.5 * v_hi);
-  if (a.method == "bifurcation") {
-    const engine::BifurcationOptions o = bifurcation_options(a);
-    const auto r = engine::bifurcation_sweep(sc, o, dir + "/bifurcation.csv");
-    out.critical = r.nonlinear_critical_speed;
-    out.points = r.points;
-    out.fold_amplitude = r.fold_amplitude;
-    out.fold_frequency = r.fold_frequency;
-    out.bifurcation = o;
-    summary.set("speed_resolution_kmh", a.v_step_kmh);
-    summary.set("rule", engine::critical_speed_rule(o));
-    results::Json counts = results::Json::object();
-    int n[5] = {0, 0, 0, 0, 0};
-    for (const auto& p : r.points) ++n[static_cast<int>(engine::point_state(p, o))];
-    for (int q = 0; q < 5; ++q) counts.set(engine::point_state_name(static_cast<engine::PointState>(q)), n[q]);
-    summary.set("points_by_state", counts);
-    summary.set("limit_cycle_amplitude_at_fold_mm",
-                std::isnan(r.fold_amplitude) ? results::Json(nullptr) : results::Json(r.fold_amplitude * 1e3));
-    summary.set("limit_cycle_frequency_at_fold_hz",
-                std::isnan(r.fold_frequency) ? results::Json(nullptr) : results::Json(r.fold_frequency));
-    if (mpi.rank == 0) {
-      engine::BifurcationResult copy = r;
-      const std::vector<engine::BifurcationCurve> curves = {
-          {contact::reduction_label(sc.reduction), "tab:blue", &copy, out.linear}};
-      results::draw(engine::bifurcation_chart(curves, o, "Bifurcation diagram: " + sc.name, a.up_branch),
-                    dir + "/bifurcation.png");
-    }
-  } else {
-    const engine::RampingOptions o = ramping_options(a);
-    if (mpi.rank == 0)
-      std::printf("ramping from %.1f km/h (%s) down to %.1f km/h at %.3g m/s^2, after %.3g s at the start speed\n",
-                  a.ramp_start_kmh, a.ramp_start_source.c_str(), a.v_min_kmh, a.deceleration, o.settle_time);
-    const auto r = engine::ramping(sc, o);
-    out.critical = r.critical_speed;
-    out.fold_amplitude = r.critical_amplitude;
-    summary.set("deceleration_m_s2", a.deceleration);
-    summary.set("hunting_at_start", r.hunting_at_start);
-    summary.set("hunting_at_end", r.hunting_at_end);
-    summary.set("start_speed_kmh", r.start_speed * 3.6);
-    summary.set("start_speed_source", a.ramp_start_source);
-    summary.set("critical_speed_read_at_time_s",
-                std::isnan(r.critical_time) ? results::Json(nullptr) : results::Json(r.critical_time));
-    summary.set("envelope_at_critical_speed_mm", std::isnan(r.critical_amplitude)
-                                                     ? results::Json(nullptr)
-                                                     : results::Json(r.critical_amplitude * 1e3));
-    if (mpi.rank == 0) {
-      results::CsvWriter csv(dir + "/ramping.csv", {"time_s", "speed_kmh", "max_lateral_mm"}, false, 1000);
-      for (std::size_t i = 0; i < r.time.size(); ++i) csv.row({r.time[i], r.speed[i] * 3.6, r.max_lateral[i] * 1e3});
-      csv.close();
-      results::draw(engine::ramping_chart(r, out.linear, o.threshold, "Ramping: " + sc.name), dir + "/ramping.png");
-    }
+// The chart (and for ramping the record) of one analysis in `dir`.
+void write_analysis_files(const engine::Scenario& sc, const engine::CriticalSpeedStudySettings& s,
+                          const engine::CriticalSpeedOutcome& o, const std::string& dir) {
+  if (s.method == engine::CriticalSpeedMethod::bifurcation) {
+    const std::vector<engine::BifurcationCurve> curves = {
+        {contact::reduction_label(sc.reduction), "tab:blue", &o.bifurcation, o.linear}};
+    results::draw(engine::bifurcation_chart(curves, engine::bifurcation_options(s), "Bifurcation diagram: " + sc.name,
+                                            s.up_branch),
+                  dir + "/bifurcation.png");
+    return;
   }
-  out.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  return out;
-}
-
-void fill_summary(Json& s, const engine::Scenario& sc, const CriticalSpeedArgs& a, const Outcome& o) {
-  s.set("scenario", sc.name);
-  s.set("vehicle", sc.model.vehicle_name);
-  s.set("method", a.method);
-  s.set("geometry", sc.geometry_description);
-  s.set("equivalent_conicity_3mm", sc.equivalent_conicity_3mm);
-  s.set("contact_model", sc.model.coupling.options().tangential);
-  s.set("contact_description", sc.model.coupling.describe());
-  s.set("reduction", contact::reduction_label(sc.reduction));
-  s.set("mu", sc.model.coupling.options().material.mu);
-  s.set("wheelset_model", engine::wheelset_model_name(sc.model.wheelset_model));
-  s.set("geometry", sc.geometry_description);
-  s.set("saturation_law", engine::saturation_law(sc));
-  s.set("record", engine::scenario_record(sc));
-  s.set("critical_speed_kmh", std::isnan(o.critical) ? Json(nullptr) : Json(o.critical * 3.6));
-  s.set("linear_critical_speed_kmh", std::isnan(o.linear) ? Json(nullptr) : Json(o.linear * 3.6));
-  s.set("speed_range_kmh", results::Json::array().push(a.v_min_kmh).push(a.v_max_kmh));
-  Json set = Json::object();
-  if (a.method == "bifurcation") {
-    set.set("v_step_kmh", a.v_step_kmh);
-    set.set("duration_s", a.duration);
-    set.set("duration_per_point_s", a.duration);
-    set.set("large_disturbance_mm", a.large);
-    set.set("small_disturbance_mm", a.small);
-    set.set("up_branch", a.up_branch);
-    set.set("continuation", a.continuation == 1);
-  } else {
-    set.set("start_speed_kmh", a.ramp_start_kmh);
-    set.set("disturbance_mm", a.ramp_disturbance);
-    set.set("deceleration_m_s2", a.deceleration);
-  }
-  set.set("threshold_mm", a.threshold);
-  s.set("settings", set);
-  s.set("wall_time_s", o.wall);
-}
-
-// Sweep settings of the command line / scenario as the engine's options.
-engine::BifurcationOptions bifurcation_options(const CriticalSpeedArgs& a) {
-  engine::BifurcationOptions o;
-  o.v_min = a.v_min_kmh / 3.6;
-  o.v_max = a.v_max_kmh / 3.6;
-  o.v_step = a.v_step_kmh / 3.6;
-  o.duration = a.duration;
-  o.large_disturbance = a.large * 1e-3;
-  o.small_disturbance = a.small * 1e-3;
-  o.threshold = a.threshold * 1e-3;
-  o.up_branch = a.up_branch;
-  o.continuation = a.continuation == 1;
-  o.threads = a.threads;
-  o.use_mpi = true;
-  return o;
-}
-
-engine::RampingOptions ramping_options(const CriticalSpeedArgs& a) {
-  engine::RampingOptions o;
-  o.v_start = a.ramp_start_kmh / 3.6;
-  o.v_end = a.v_min_kmh / 3.6;
-  o.deceleration = a.deceleration;
-  o.disturbance = a.ramp_disturbance * 1e-3;
-  o.threshold = a.threshold * 1e-3;
-  return o;
+  const engine::RampingResult& r = o.ramping;
+  results::CsvWriter csv(dir + "/ramping.csv", {"time_s", "speed_kmh", "max_lateral_mm"}, false, 1000);
+  for (std::size_t i = 0; i < r.time.size(); ++i) csv.row({r.time[i], r.speed[i] * 3.6, r.max_lateral[i] * 1e3});
+  csv.close();
+  results::draw(engine::ramping_chart(r, o.linear, s.threshold, "Ramping: " + sc.name), dir + "/ramping.png");
 }
 
 std::string kmh_cell(double v) {
@@ -258,20 +167,22 @@ std::string percent_cell(double v) {
 // --reductions: the study (engine/analysis/reduction_study.hpp), its files and table.
 int run_reduction_study(const engine::Scenario& base, const CriticalSpeedArgs& a,
                         const std::vector<contact::ReductionSpec>& entries, const engine::MpiContext& mpi) {
+  const engine::CriticalSpeedStudySettings s = study_settings(a);
   engine::ReductionStudyOptions o;
   o.entries = entries;
   o.method = a.method;
-  o.bifurcation = bifurcation_options(a);
-  o.ramping = ramping_options(a);
+  o.bifurcation = engine::bifurcation_options(s);
+  o.ramping = engine::ramping_options(s);
+  // The bracket from the values as given, (1.5 v_kmh) / 3.6: not 1.5 (v_kmh / 3.6) as
+  // linear_bracket_high, which differs in the last bit for some speeds (e.g. 200 km/h)
+  // and so would move the study's linear critical speeds by 1e-16 relative.
   o.linear_v_lo = std::max(1.0, 0.25 * a.v_min_kmh / 3.6);
   o.linear_v_hi = 1.5 * a.v_max_kmh / 3.6;
   o.out_dir = a.out;
   o.cache_dir = a.cache_dir;
   o.tangential_model = a.model;
   o.threads = a.threads;
-  if (mpi.rank == 0 && a.method == "ramping")
-    std::printf("ramping from %.1f km/h (%s) down to %.1f km/h at %.3g m/s^2, every entry\n", a.ramp_start_kmh,
-                a.ramp_start_source.c_str(), a.v_min_kmh, a.deceleration);
+  if (mpi.rank == 0 && a.method == "ramping") print_ramp_start(a, ", every entry");
   const engine::ReductionStudyResult r = engine::reduction_study(base, o);
   if (mpi.rank != 0) return kExitSuccess;
 
@@ -381,9 +292,9 @@ int run_critical_speed(const CriticalSpeedArgs& args) {
   if (!study_entries.empty()) return run_reduction_study(base, a, study_entries, mpi);
   // The reduction resolved once (a layer's factors for this scenario's patch).
   if (reduction_given) base = engine::with_reduction(base, spec, "--reduction", a.cache_dir);
-  const contact::ReductionFactors k = base.reduction.k;
-  const contact::ReductionFactors* kp = reduction_given ? &base.reduction.k : nullptr;
 
+  const engine::CriticalSpeedStudySettings s = study_settings(a);
+  if (mpi.rank == 0 && s.method == engine::CriticalSpeedMethod::ramping) print_ramp_start(a, "");
   if (a.compare_models) {
     std::vector<std::string> names;
     std::stringstream ss(a.models);
@@ -391,102 +302,82 @@ int run_critical_speed(const CriticalSpeedArgs& args) {
       if (!n.empty()) names.push_back(n);
     for (const auto& n : names)
       if (n != "coefficients") contact::make_tangential_model(n);
-    results::CsvWriter csv(a.out + "/compare_models.csv",
-                           {"contact_model", "critical_speed_kmh", "linear_critical_speed_kmh", "wall_time_s"});
+    // Each model's files as soon as it is done (rank 0): a later model's failure keeps them.
+    std::optional<results::CsvWriter> csv;
+    if (mpi.rank == 0)
+      csv.emplace(a.out + "/compare_models.csv",
+                  std::vector<std::string>{"contact_model", "critical_speed_kmh", "linear_critical_speed_kmh",
+                                           "wall_time_s"});
     Json table = Json::array();
     results::ChartSeries pts{"critical speed", {}, {}, "markers", ""};
     results::Chart chart;
-    for (std::size_t i = 0; i < names.size(); ++i) {
-      const engine::Scenario sc = engine::with_contact(base, names[i], nullptr);
-      spdlog::info("compare-models: {} ({}/{})", names[i], i + 1, names.size());
-      Json s = Json::object();
-      const Outcome o = analyse(sc, a, a.out + "/" + names[i], mpi, s);
-      fill_summary(s, sc, a, o);
-      if (mpi.rank == 0) {
-        s.write_file(a.out + "/" + names[i] + "/summary.json");
-        csv.cell(names[i]).cell(o.critical * 3.6).cell(o.linear * 3.6).cell(o.wall).end_row();
-      }
-      table.push(s);
-      pts.x.push_back(o.wall);
-      pts.y.push_back(o.critical * 3.6);
-      chart.annotations.push_back({names[i], {o.wall, o.critical * 3.6}});
-    }
-    if (mpi.rank == 0) {
-      chart.title = "Critical speed and cost per contact model (" + a.method + ")";
-      chart.xlabel = "wall time of the analysis [s]";
-      chart.ylabel = "critical speed [km/h]";
-      chart.logx = true;
-      chart.series.push_back(pts);
-      results::draw(chart, a.out + "/compare_models.png");
-      Json summary = Json::object();
-      summary.set("method", a.method);
-      summary.set("models", table);
-      summary.write_file(a.out + "/summary.json");
-      std::printf("%-16s %22s %22s %12s\n", "contact model", "critical speed", "linear crit. speed", "wall time");
-      for (std::size_t i = 0; i < names.size(); ++i)
-        std::printf("%-16s %22s %22s %10.1f s\n", names[i].c_str(), kmh(pts.y[i] / 3.6).c_str(), "", pts.x[i]);
-    }
+    const auto finished = [&](const engine::ModelCriticalSpeed& m) {
+      table.push(m.summary);
+      pts.x.push_back(m.outcome.wall);
+      pts.y.push_back(m.outcome.critical * 3.6);
+      chart.annotations.push_back({m.model, {m.outcome.wall, m.outcome.critical * 3.6}});
+      if (mpi.rank != 0) return;
+      write_analysis_files(m.scenario, s, m.outcome, a.out + "/" + m.model);
+      m.summary.write_file(a.out + "/" + m.model + "/summary.json");
+      csv->cell(m.model).cell(m.outcome.critical * 3.6).cell(m.outcome.linear * 3.6).cell(m.outcome.wall).end_row();
+    };
+    const std::vector<engine::ModelCriticalSpeed> runs =
+        engine::critical_speed_per_model(base, names, s, a.out, finished);
+    if (mpi.rank != 0) return kExitSuccess;
+    csv->close();
+    chart.title = "Critical speed and cost per contact model (" + a.method + ")";
+    chart.xlabel = "wall time of the analysis [s]";
+    chart.ylabel = "critical speed [km/h]";
+    chart.logx = true;
+    chart.series.push_back(pts);
+    results::draw(chart, a.out + "/compare_models.png");
+    Json summary = Json::object();
+    summary.set("method", a.method);
+    summary.set("models", table);
+    summary.write_file(a.out + "/summary.json");
+    std::printf("%-16s %22s %22s %12s\n", "contact model", "critical speed", "linear crit. speed", "wall time");
+    for (std::size_t i = 0; i < runs.size(); ++i)
+      std::printf("%-16s %22s %22s %10.1f s\n", runs[i].model.c_str(), kmh(pts.y[i] / 3.6).c_str(), "", pts.x[i]);
     return kExitSuccess;
   }
 
-  const engine::Scenario sc = engine::with_contact(base, a.model, nullptr);
-  Json summary = Json::object();
-  const Outcome o = analyse(sc, a, a.out, mpi, summary);
-  fill_summary(summary, sc, a, o);
-  // With reduced creep coefficients, also the unreduced contact for comparison.
-  Outcome ref;
-  const bool with_baseline = kp && a.baseline && !(k.k11 == 1.0 && k.k22 == 1.0 && k.k23 == 1.0);
-  if (with_baseline) {
-    const contact::ReductionFactors none;
-    const engine::Scenario sc0 = engine::with_contact(base, a.model, &none);
-    Json s0 = Json::object();
-    ref = analyse(sc0, a, a.out + "/unreduced", mpi, s0);
-    Json b = Json::object();
-    b.set("critical_speed_kmh", std::isnan(ref.critical) ? Json(nullptr) : Json(ref.critical * 3.6));
-    b.set("linear_critical_speed_kmh", std::isnan(ref.linear) ? Json(nullptr) : Json(ref.linear * 3.6));
-    if (!std::isnan(ref.critical) && !std::isnan(o.critical))
-      b.set("critical_speed_change_percent", 100.0 * (o.critical - ref.critical) / ref.critical);
-    if (!std::isnan(ref.linear) && !std::isnan(o.linear))
-      b.set("linear_critical_speed_change_percent", 100.0 * (o.linear - ref.linear) / ref.linear);
-    summary.set("unreduced", b);
-    if (mpi.rank == 0 && a.method == "bifurcation") {
+  const engine::CriticalSpeedWithBaseline r =
+      engine::critical_speed_with_baseline(base, a.model, s, reduction_given, a.baseline, a.out);
+  if (mpi.rank != 0) return kExitSuccess;
+  const engine::Scenario& sc = r.scenario;
+  const engine::CriticalSpeedOutcome& o = r.outcome;
+  const engine::CriticalSpeedOutcome& ref = r.unreduced;
+  write_analysis_files(sc, s, o, a.out);
+  if (r.with_baseline) {
+    write_analysis_files(r.unreduced_scenario, s, ref, a.out + "/unreduced");
+    if (s.method == engine::CriticalSpeedMethod::bifurcation) {
       // Both down branches on one chart: how far the reduction moves the hunting onset.
-      engine::BifurcationResult r0, r1;
-      r0.points = ref.points;
-      r0.nonlinear_critical_speed = ref.critical;
-      r0.fold_amplitude = ref.fold_amplitude;
-      r1.points = o.points;
-      r1.nonlinear_critical_speed = o.critical;
-      r1.fold_amplitude = o.fold_amplitude;
       const std::vector<engine::BifurcationCurve> curves = {
-          {"unreduced (k = 1)", "tab:blue", &r0, ref.linear},
-          {"reduction " + contact::reduction_label(sc.reduction), "tab:red", &r1, o.linear}};
-      results::draw(engine::bifurcation_chart(curves, o.bifurcation,
+          {"unreduced (k = 1)", "tab:blue", &ref.bifurcation, ref.linear},
+          {"reduction " + contact::reduction_label(sc.reduction), "tab:red", &o.bifurcation, o.linear}};
+      results::draw(engine::bifurcation_chart(curves, engine::bifurcation_options(s),
                                               "Effect of the creep-coefficient reduction: " + sc.name, false),
                     a.out + "/bifurcation_reduction.png");
     }
   }
-  if (mpi.rank == 0) {
-    summary.write_file(a.out + "/summary.json");
-    std::printf("\nrailsim critical speed: %s\n", sc.name.c_str());
-    std::printf("  vehicle            %s\n", sc.model.vehicle_name.c_str());
-    std::printf("  contact            %s\n", sc.model.coupling.describe().c_str());
-    if (a.method == "ramping")
-      std::printf("  method             ramping from %.1f km/h (%s) down to %.0f km/h\n", a.ramp_start_kmh,
-                  a.ramp_start_source.c_str(), a.v_min_kmh);
-    else
-      std::printf("  method             %s over %.0f..%.0f km/h\n", a.method.c_str(), a.v_min_kmh, a.v_max_kmh);
-    std::printf("  critical speed     %s\n", kmh(o.critical).c_str());
-    std::printf("  linear crit. speed %s (eigenvalues)\n", kmh(o.linear).c_str());
-    if (with_baseline) {
-      std::printf("  without reduction  %s (linear %s)\n", kmh(ref.critical).c_str(), kmh(ref.linear).c_str());
-      if (!std::isnan(ref.critical) && !std::isnan(o.critical))
-        std::printf("  change             %+.1f %% from the reduction factors\n",
-                    100.0 * (o.critical - ref.critical) / ref.critical);
-    }
-    std::printf("  wall time          %.1f s\n  results            %s/summary.json\n\n", o.wall + ref.wall,
-                a.out.c_str());
+  r.summary.write_file(a.out + "/summary.json");
+  std::printf("\nrailsim critical speed: %s\n", sc.name.c_str());
+  std::printf("  vehicle            %s\n", sc.model.vehicle_name.c_str());
+  std::printf("  contact            %s\n", sc.model.coupling.describe().c_str());
+  if (a.method == "ramping")
+    std::printf("  method             ramping from %.1f km/h (%s) down to %.0f km/h\n", a.ramp_start_kmh,
+                a.ramp_start_source.c_str(), a.v_min_kmh);
+  else
+    std::printf("  method             %s over %.0f..%.0f km/h\n", a.method.c_str(), a.v_min_kmh, a.v_max_kmh);
+  std::printf("  critical speed     %s\n", kmh(o.critical).c_str());
+  std::printf("  linear crit. speed %s (eigenvalues)\n", kmh(o.linear).c_str());
+  if (r.with_baseline) {
+    std::printf("  without reduction  %s (linear %s)\n", kmh(ref.critical).c_str(), kmh(ref.linear).c_str());
+    if (!std::isnan(r.change_percent))
+      std::printf("  change             %+.1f %% from the reduction factors\n", r.change_percent);
   }
+  std::printf("  wall time          %.1f s\n  results            %s/summary.json\n\n", o.wall + ref.wall,
+              a.out.c_str());
   return kExitSuccess;
 }
 

@@ -20,7 +20,6 @@
 #include "cli/support_speed_range.hpp"
 #include "core/errors.hpp"
 #include "core/output_lock.hpp"
-#include "engine/analysis/critical_speed.hpp"
 #include "engine/analysis/mode_sweep.hpp"
 #include "engine/linearisation.hpp"
 #include "engine/io/scenario.hpp"
@@ -64,7 +63,8 @@ int run_modes(const ModesArgs& a) {
   }
   std::vector<double> speeds;
   for (int i = 0; i < n; ++i) speeds.push_back((a.v_min_kmh + i * a.v_step_kmh) / 3.6);
-  const auto all = engine::modes_versus_speed(sc, speeds, a.count);
+  const engine::ModeSweep sweep = engine::mode_sweep(sc, speeds, a.count, a.v_min_kmh / 3.6, a.v_max_kmh / 3.6);
+  const auto& all = sweep.modes;
   for (int i = 0; i < n; ++i) {
     const double v_kmh = a.v_min_kmh + i * a.v_step_kmh;
     const auto& md = all[static_cast<std::size_t>(i)];
@@ -77,7 +77,7 @@ int run_modes(const ModesArgs& a) {
     }
   }
   csv.close();
-  const double v_lin = engine::linear_critical_speed(sc, a.v_min_kmh / 3.6, a.v_max_kmh / 3.6);
+  const double v_lin = sweep.linear_critical_speed;
   for (int k = 0; k < a.count; ++k) chart.series.push_back(zeta[k]), fchart.series.push_back(freq[k]);
   if (!std::isnan(v_lin)) {
     chart.lines.push_back({v_lin * 3.6, "linear critical speed", "r", true});

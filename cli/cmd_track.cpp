@@ -1,5 +1,6 @@
 // `railsim track TRACK.yaml --out track.csv [--step 0.25] [--from s0 --to s1] [--speed-kmh V]`:
-// load a track file and sample its alignment and irregularities for plotting.
+// load a track file and sample its alignment and irregularities for plotting
+// (engine/analysis/track_sampling.hpp); this file writes the rows and prints.
 // Columns (SI unless the name says mm): s, x, y, heading, curvature,
 // dcurvature, cant_mm, cant_angle, dcant_angle, the four irregularity channels
 // and the left/right rail positions in mm, their slopes (d/ds, dimensionless),
@@ -17,6 +18,7 @@
 #include "cli/commands.hpp"
 #include "config/yaml_input.hpp"
 #include "core/errors.hpp"
+#include "engine/analysis/track_sampling.hpp"
 #include "results/csv_writer.hpp"
 #include "track/track_file.hpp"
 
@@ -42,10 +44,9 @@ int run_track(const TrackOptions& o) {
   if (o.speed_kmh && !(*o.speed_kmh > 0.0 && *o.speed_kmh <= 720.0))
     throw InputError("--speed-kmh: expected a speed in (0, 720] km/h (got " + format_number(*o.speed_kmh) + ")");
   if (!(s1 > s0)) throw InputError("--from/--to: need from < to (got " + format_number(s0) + ", " + format_number(s1) + ")");
-  const double count = std::floor((s1 - s0) / o.step + 1e-9) + 1.0;
+  const double count = engine::track_sample_count(s0, s1, o.step);
   if (count > 2e7) throw InputError("--step " + format_number(o.step) + " gives " + format_number(count) +
                                     " rows (limit 2e7); use a larger step or a shorter range");
-  const auto n = static_cast<long>(count);
 
   spdlog::info("track '{}': {:.3f} m, {} segments, rail spacing {} m, gauge {} m", track.name(), track.length(),
                track.alignment().segment_count(), track.rail_spacing(), track.gauge());
@@ -64,11 +65,11 @@ int run_track(const TrackOptions& o) {
                                    "cross_level_slope", "gauge_slope"};
   if (o.speed_kmh) cols.push_back("cant_deficiency_mm");
   results::CsvWriter csv(o.out, cols, false, 100000);
-  std::array<double, track::kChannelCount> maxabs{}, sumsq{};
   std::vector<double> row(cols.size());
-  for (long j = 0; j < n; ++j) {
-    const double s = std::min(s0 + static_cast<double>(j) * o.step, s1);
-    const track::TrackState t = track.at(s);
+  const std::optional<double> speed = o.speed_kmh ? std::optional<double>(*o.speed_kmh / 3.6) : std::nullopt;
+  const auto write_row = [&](const engine::TrackSample& smp) {
+    const double s = smp.s;
+    const track::TrackState& t = smp.state;
     const auto& irr = t.irregularity;
     std::size_t k = 0;
     for (double v : {s, t.x, t.y, t.heading, t.curvature, t.dcurvature, t.cant * 1e3, t.cant_angle, t.dcant_angle,
@@ -76,21 +77,19 @@ int run_track(const TrackOptions& o) {
                      irr.left_lateral() * 1e3, irr.right_lateral() * 1e3, irr.left_vertical() * 1e3,
                      irr.right_vertical() * 1e3, irr.slope[0], irr.slope[1], irr.slope[2], irr.slope[3]})
       row[k++] = v;
-    if (o.speed_kmh) row[k++] = track.cant_deficiency(s, *o.speed_kmh / 3.6) * 1e3;
+    if (o.speed_kmh) row[k++] = smp.cant_deficiency * 1e3;
     csv.row(row);
-    for (int c = 0; c < track::kChannelCount; ++c) {
-      maxabs[static_cast<std::size_t>(c)] = std::max(maxabs[static_cast<std::size_t>(c)], std::abs(irr.value[static_cast<std::size_t>(c)]));
-      sumsq[static_cast<std::size_t>(c)] += irr.value[static_cast<std::size_t>(c)] * irr.value[static_cast<std::size_t>(c)];
-    }
-  }
+  };
+  const engine::TrackSamplingStats st = engine::sample_track(track, s0, s1, o.step, speed, write_row);
+  const long n = st.rows;
   csv.close();
   std::printf("track %s: %.3f m, %d segments, %zu irregularity components\n", track.name().c_str(), track.length(),
               track.alignment().segment_count(), track.irregularities().components().size());
   std::printf("sampled s = %.6g .. %.6g m every %.6g m: %ld rows -> %s\n", s0, s1, o.step, n, o.out.c_str());
   for (track::Channel c : track::kAllChannels) {
     const auto i = static_cast<std::size_t>(track::index(c));
-    std::printf("  %-12s max |r| = %8.3f mm   rms = %8.3f mm\n", track::channel_name(c), maxabs[i] * 1e3,
-                std::sqrt(sumsq[i] / static_cast<double>(n)) * 1e3);
+    std::printf("  %-12s max |r| = %8.3f mm   rms = %8.3f mm\n", track::channel_name(c), st.max_abs[i] * 1e3,
+                st.rms[i] * 1e3);
   }
   return kExitSuccess;
 }

@@ -4,6 +4,7 @@
 // numerical failure. `railsim --version` prints
 // "railsim X.Y.Z" (as help2man expects); `railsim version` says more.
 // Every numeric option is refused unless finite (cli/support_option_checks.hpp).
+// Under mpirun, MPI is started here for the whole run (engine::MpiSession).
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
@@ -17,8 +18,11 @@
 #include "cli/support_option_checks.hpp"
 #include "core/errors.hpp"
 #include "core/version.hpp"
+#include "engine/analysis/sweep_runner.hpp"
 
 int main(int argc, char** argv) {
+  // MPI, when launched by mpirun, for the whole run (finalised when main returns).
+  const railsim::engine::MpiSession mpi(&argc, &argv);
   CLI::App app{"railsim: railway vehicle dynamics with pluggable wheel-rail contact"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("railsim ") + railsim::kVersion, "Print the version and exit");

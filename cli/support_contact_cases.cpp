@@ -1,10 +1,9 @@
-// Contact case files, timed model calls and result rows; see support_contact_cases.hpp.
+// Contact case files and result rows; see support_contact_cases.hpp.
 #include "cli/support_contact_cases.hpp"
 
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
-#include <chrono>
 #include <set>
 
 #include "contact/hertz.hpp"
@@ -90,30 +89,6 @@ ContactCaseSet load_contact_cases(const std::string& path) {
 void set_reduction(ContactCaseSet& set, const contact::ReductionFactors& k) {
   set.reduction = k;
   for (auto& c : set.cases) c.input.reduction = k;
-}
-
-TimedForces solve_timed(const contact::TangentialModel& model, const contact::ContactInput& in,
-                        contact::TangentialWorkspace* ws) {
-  using clock = std::chrono::steady_clock;
-  TimedForces r;
-  r.forces = model.solve(in, ws);  // first call: errors surface here, caches warm up
-  volatile double sink = 0.0;
-  const auto window = [&](long reps) {
-    const auto t0 = clock::now();
-    for (long i = 0; i < reps; ++i) sink = sink + model.solve(in, ws).Fx;
-    return std::chrono::duration<double, std::nano>(clock::now() - t0).count();
-  };
-  // Grow the repetition count until one window lasts >= 40 us, then keep the
-  // fastest of five windows (the machine may be shared; the minimum is the cost).
-  long reps = 1;
-  double ns = window(reps);
-  while (ns < 4.0e4 && reps < (1L << 22)) {
-    reps *= 4;
-    ns = window(reps);
-  }
-  for (int i = 0; i < 4 && ns * 5 < 5.0e7; ++i) ns = std::min(ns, window(reps));
-  r.time_ns = ns / static_cast<double>(reps);
-  return r;
 }
 
 std::vector<std::string> contact_csv_columns() {

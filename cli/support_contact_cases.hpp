@@ -1,6 +1,6 @@
 // Contact case files for the contact-model commands (`railsim contact`,
-// `railsim demo`, later `railsim compare-contact`): reading, Hertz solution,
-// timed model calls and the result CSV.
+// `railsim demo`, `railsim compare-contact`): reading, Hertz solution and the
+// result CSV.
 //
 // CASES.yaml:
 //   material: {E: 2.1e11, nu: 0.28, mu: 0.3}     # Pa, -, -; nu in (0, 0.5]
@@ -22,6 +22,7 @@
 #include "config/yaml_input.hpp"
 #include "contact/tangential_model.hpp"
 #include "contact/types.hpp"
+#include "engine/analysis/timed_solve.hpp"
 #include "results/csv_writer.hpp"
 
 namespace railsim::cli {
@@ -48,14 +49,9 @@ ContactCaseSet load_contact_cases(const std::string& path);
 // Replace the reduction factors of every case (the --reduction option).
 void set_reduction(ContactCaseSet& set, const contact::ReductionFactors& k);
 
-// One model call with its measured cost: the call is repeated until about
-// 0.2 ms have elapsed (at least once), time_ns = elapsed / repetitions (steady clock).
-struct TimedForces {
-  contact::ContactForces forces;
-  double time_ns = 0.0;
-};
-TimedForces solve_timed(const contact::TangentialModel& model, const contact::ContactInput& in,
-                        contact::TangentialWorkspace* ws);
+// Timed model calls: engine/analysis/timed_solve.hpp.
+using engine::solve_timed;
+using engine::TimedForces;
 
 // Result CSV: id, model, reduction, A, B, a, b, p0, Fz, xi, eta, phi, Fx, Fy, Mz,
 // valid, reason, iterations, time_ns (SI units; forces of the rail on the wheel).

@@ -29,7 +29,7 @@ std::string kmh_text(double v) {
 
 // The series of one branch of one sweep. `main` adds the legend entry of the
 // curve (its settled line); markers for the other states carry no label.
-void add_branch(results::Chart& c, const std::vector<BifurcationPoint>& pts, const std::string& branch,
+void add_branch(results::Chart& c, const std::vector<BifurcationPoint>& pts, Branch branch,
                 const BifurcationOptions& o, const std::string& label, const std::string& color, double critical,
                 double fold_amplitude, bool down) {
   std::vector<const BifurcationPoint*> b;
@@ -123,10 +123,10 @@ results::Chart bifurcation_chart(const std::vector<BifurcationCurve>& curves, co
   for (const auto& cv : curves) {
     if (!cv.result) continue;
     const std::string label = cv.label + ": critical speed " + kmh_text(cv.result->nonlinear_critical_speed);
-    add_branch(c, cv.result->points, "down", o, label, cv.color, cv.result->nonlinear_critical_speed,
+    add_branch(c, cv.result->points, Branch::down, o, label, cv.color, cv.result->nonlinear_critical_speed,
                cv.result->fold_amplitude, true);
     if (up_branch && curves.size() == 1)
-      add_branch(c, cv.result->points, "up", o, cv.label + ", up branch (small disturbance)", "0.55", std::nan(""),
+      add_branch(c, cv.result->points, Branch::up, o, cv.label + ", up branch (small disturbance)", "0.55", std::nan(""),
                  std::nan(""), false);
   }
   add_legend_keys(c, o);

@@ -7,17 +7,11 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <limits>
-#include <cstdlib>
-#include <thread>
-#include <sstream>
-#include <map>
 #include <filesystem>
-#include <fstream>
-#include <mutex>
+#include <limits>
 
-#include "core/atomic_file.hpp"
 #include "core/errors.hpp"
+#include "engine/analysis/state_store.hpp"
 #include "engine/linearisation.hpp"
 #include "engine/elements/rigid_body.hpp"
 #include "engine/simulation.hpp"
@@ -85,6 +79,87 @@ PointOutcome run_point(const Scenario& base, double speed, const Eigen::VectorXd
   return out;
 }
 
+// The points file of a bifurcation sweep, one format for every kind of sweep
+// (plain, continuation phase 1, the continuation chain): the columns below
+// (column "down": 1 on the down branch, 0 on the up branch) and the key
+// "<branch>:<speed %.6g m/s>", or "chain:<speed>" for a down-branch point
+// started from the final state of the speed above (path following).
+const std::vector<std::string> kPointColumns = {"speed_m_s", "down", "amplitude_m", "frequency_hz", "growth", "failed"};
+constexpr const char* kChainPrefix = "chain";
+
+std::string point_key(Branch b, bool chained, double v) {
+  char key[64];
+  std::snprintf(key, sizeof key, "%s:%.6g", chained ? kChainPrefix : branch_name(b), v);
+  return key;
+}
+
+bool is_chain_key(const std::string& key) { return key.substr(0, key.find(':')) == kChainPrefix; }
+
+std::vector<double> point_row(double v, Branch b, const PointOutcome& r) {
+  return {v, b == Branch::down ? 1.0 : 0.0, r.amplitude, r.frequency, r.growth, r.failed ? 1.0 : 0.0};
+}
+
+BifurcationPoint point_of(const SweepResult& r) {
+  BifurcationPoint p;
+  p.speed = r.values[0];
+  p.branch = r.values[1] > 0.5 ? Branch::down : Branch::up;
+  p.amplitude = r.values[2];
+  p.frequency = r.values[3];
+  p.growth = r.values[4];
+  p.failed = r.values[5] > 0.5;
+  p.continued = is_chain_key(r.key);
+  return p;
+}
+
+// The points of a sweep (down branch from v_max downwards, then the up branch)
+// and the branch of each, by point index.
+struct SweepPlan {
+  std::vector<SweepPoint> points;  // params: {speed [m/s]}
+  std::vector<Branch> branch;
+};
+
+SweepPlan sweep_plan(const BifurcationOptions& o) {
+  SweepPlan plan;
+  const long n_speeds = static_cast<long>(std::floor((o.v_max - o.v_min) / o.v_step + 1e-9)) + 1;
+  for (const Branch b : {Branch::down, Branch::up}) {
+    if (b == Branch::up && !o.up_branch) continue;
+    for (long i = 0; i < n_speeds; ++i) {
+      const double v = o.v_max - static_cast<double>(i) * o.v_step;
+      plan.points.push_back({static_cast<long>(plan.points.size()), point_key(b, false, v), {v}});
+      plan.branch.push_back(b);
+    }
+  }
+  return plan;
+}
+
+SweepOptions sweep_options(const BifurcationOptions& o, const std::string& output, bool use_mpi) {
+  SweepOptions so;
+  so.output = output;
+  // Only deterministic values go into the points file, so that thread and MPI
+  // runs of the same sweep write identical files (no wall times here).
+  so.result_columns = kPointColumns;
+  so.threads = o.threads;
+  so.use_mpi = use_mpi;
+  so.label = o.label;
+  return so;
+}
+
+// One sweep point, the same for every kind of sweep: the run from its branch's
+// disturbance; with `states`, the final state of a down-branch run that did not
+// stop is kept under the point's key.
+std::vector<double> run_sweep_point(const Scenario& sc, const BifurcationOptions& o, const SweepPlan& plan,
+                                    const SweepPoint& p, StateStore* states) {
+  const double v = p.params[0];
+  const Branch b = plan.branch[static_cast<std::size_t>(p.index)];
+  const bool keep = states && b == Branch::down;
+  Eigen::VectorXd x_end;
+  const PointOutcome r = run_point(
+      sc, v, disturbed_state(sc, b == Branch::down ? o.large_disturbance : o.small_disturbance), o,
+      keep ? &x_end : nullptr);
+  if (keep && !r.failed) states->put(p.key, x_end);
+  return point_row(v, b, r);
+}
+
 // Where the hunting limit cycle collapsed during the ramp. The envelope of the
 // lateral motion is sampled at its half-cycle peaks. While the speed is above
 // the critical speed the peaks stay (nearly) constant: the limit cycle only
@@ -133,11 +208,12 @@ double collapse_speed(const std::vector<double>& t, const std::vector<double>& v
 }  // namespace
 
 namespace {
-BifurcationPoint point_of(const SweepResult& r);
 BifurcationResult collect(const std::vector<SweepResult>& rows, const BifurcationOptions& o);
-BifurcationResult continuation_sweep(const Scenario& scenario, const BifurcationOptions& o,
-                                     const std::vector<SweepPoint>& points, const std::string& points_csv);
+BifurcationResult continuation_sweep(const Scenario& scenario, const BifurcationOptions& o, const SweepPlan& plan,
+                                     const std::string& points_csv);
 }  // namespace
+
+const char* branch_name(Branch b) { return b == Branch::up ? "up" : "down"; }
 
 bool is_hunting(const BifurcationPoint& p, const BifurcationOptions& o) {
   if (p.failed) return true;
@@ -208,51 +284,13 @@ BifurcationResult bifurcation_sweep(const Scenario& scenario, const BifurcationO
                                     const std::string& points_csv) {
   if (!(o.v_min > 0.0 && o.v_max > o.v_min && o.v_step > 0.0))
     throw InputError("bifurcation sweep: need 0 < v_min < v_max and v_step > 0");
-  std::vector<double> speeds;
-  const long n_speeds = static_cast<long>(std::floor((o.v_max - o.v_min) / o.v_step + 1e-9)) + 1;
-  for (long i = 0; i < n_speeds; ++i) speeds.push_back(o.v_max - static_cast<double>(i) * o.v_step);
-  std::vector<SweepPoint> points;
-  long index = 0;
-  char key[64];
-  for (const char* branch : {"down", "up"}) {
-    if (std::string(branch) == "up" && !o.up_branch) continue;
-    for (double v : speeds) {
-      std::snprintf(key, sizeof key, "%s:%.6g", branch, v);
-      points.push_back({index++, key, {v, std::string(branch) == "down" ? 1.0 : 0.0}});
-    }
-  }
-  if (o.continuation) return continuation_sweep(scenario, o, points, points_csv);
-  SweepOptions so;
-  so.output = points_csv;
-  // Only deterministic values go into the points file, so that thread and MPI
-  // runs of the same sweep write identical files (no wall times here).
-  so.result_columns = {"speed_m_s", "down", "amplitude_m", "frequency_hz", "growth", "failed"};
-  so.threads = o.threads;
-  so.use_mpi = o.use_mpi;
-  so.label = o.label;
-  auto fn = [&](const SweepPoint& p) {
-    const double v = p.params[0];
-    const bool down = p.params[1] > 0.5;
-    const PointOutcome r =
-        run_point(scenario, v, disturbed_state(scenario, down ? o.large_disturbance : o.small_disturbance), o);
-    return std::vector<double>{v, p.params[1], r.amplitude, r.frequency, r.growth, r.failed ? 1.0 : 0.0};
-  };
-  return collect(run_sweep(points, fn, so), o);
+  const SweepPlan plan = sweep_plan(o);
+  if (o.continuation) return continuation_sweep(scenario, o, plan, points_csv);
+  const auto fn = [&](const SweepPoint& p) { return run_sweep_point(scenario, o, plan, p, nullptr); };
+  return collect(run_sweep(plan.points, fn, sweep_options(o, points_csv, o.use_mpi)), o);
 }
 
 namespace {
-
-BifurcationPoint point_of(const SweepResult& r) {
-  BifurcationPoint p;
-  p.speed = r.values[0];
-  p.branch = r.values[1] > 0.5 ? "down" : "up";
-  p.amplitude = r.values[2];
-  p.frequency = r.values[3];
-  p.growth = r.values[4];
-  p.failed = r.values[5] > 0.5;
-  p.continued = r.key.rfind("chain:", 0) == 0;
-  return p;
-}
 
 BifurcationResult collect(const std::vector<SweepResult>& rows, const BifurcationOptions& o) {
   BifurcationResult res;
@@ -266,7 +304,7 @@ BifurcationResult collect(const std::vector<SweepResult>& rows, const Bifurcatio
   res.nonlinear_critical_speed = kNaN;
   std::vector<const BifurcationPoint*> down;
   for (const auto& p : res.points)
-    if (p.branch == "down") down.push_back(&p);
+    if (p.branch == Branch::down) down.push_back(&p);
   res.fold_amplitude = res.fold_frequency = kNaN;
   for (auto it = down.rbegin(); it != down.rend(); ++it) {
     if (!is_hunting(**it, o)) break;
@@ -276,53 +314,6 @@ BifurcationResult collect(const std::vector<SweepResult>& rows, const Bifurcatio
   }
   return res;
 }
-
-// Final states of down-branch runs (key -> state), kept in memory and appended
-// to a file (one line per point: key, then the state with 17 digits, so that
-// reading it back is exact) as runs finish; thread-safe.
-class StateStore {
- public:
-  StateStore(const std::string& path, int n_states) : n_(n_states) {
-    const std::string text = read_own_file(path);
-    // Only complete lines count: a last line without its newline was torn by an
-    // interruption (its last number may be cut short) and is ignored.
-    std::size_t start = 0;
-    for (std::size_t end = text.find('\n'); end != std::string::npos; start = end + 1, end = text.find('\n', start)) {
-      std::stringstream ls(text.substr(start, end - start));
-      std::string key, cell;
-      if (!std::getline(ls, key, ',')) continue;
-      std::vector<double> x;
-      while (std::getline(ls, cell, ',')) x.push_back(std::strtod(cell.c_str(), nullptr));
-      if (static_cast<int>(x.size()) == n_)
-        states_[key] = Eigen::Map<const Eigen::VectorXd>(x.data(), static_cast<Eigen::Index>(x.size()));
-    }
-    out_.open(path);  // checked writes: a full disk is an error naming the file
-    if (start < text.size()) out_.write("\n");  // end the torn line so the next state starts a line of its own
-  }
-  void put(const std::string& key, const Eigen::VectorXd& x) {
-    if (x.size() != n_) return;
-    std::string line = key;
-    char buf[40];
-    for (Eigen::Index i = 0; i < x.size(); ++i) {
-      std::snprintf(buf, sizeof buf, ",%.17g", x[i]);
-      line += buf;
-    }
-    std::lock_guard<std::mutex> lock(mutex_);
-    states_[key] = x;
-    out_.write(line + '\n');
-  }
-  const Eigen::VectorXd* find(const std::string& key) const {
-    std::lock_guard<std::mutex> lock(mutex_);
-    const auto it = states_.find(key);
-    return it == states_.end() ? nullptr : &it->second;
-  }
-
- private:
-  int n_;
-  mutable std::mutex mutex_;
-  std::map<std::string, Eigen::VectorXd> states_;
-  AppendFile out_;
-};
 
 // Path following on the down branch, in two phases.
 // 1. Every point of both branches runs in parallel, as without continuation;
@@ -336,47 +327,31 @@ class StateStore {
 // speeds between V_h and the fold run serially. Files: OUT.sweep.csv (phase 1),
 // OUT.down.states (final states), OUT.chain.csv (phase 2, rewritten after each
 // chain point); merged into OUT. An interrupted run resumes from them.
-BifurcationResult continuation_sweep(const Scenario& scenario, const BifurcationOptions& o,
-                                     const std::vector<SweepPoint>& points, const std::string& points_csv) {
+BifurcationResult continuation_sweep(const Scenario& scenario, const BifurcationOptions& o, const SweepPlan& plan,
+                                     const std::string& points_csv) {
   if (mpi_context().size > 1)
     throw InputError("bifurcation sweep: continuation (--continuation, or continuation: true in the scenario's "
                      "critical_speed section) keeps the final states of the runs in one file: use threads "
                      "(--threads), or --no-continuation under mpirun");
-  const std::vector<std::string> columns = {"speed_m_s", "down", "amplitude_m", "frequency_hz", "growth", "failed"};
-  auto values = [](double v, double branch, const PointOutcome& r) {
-    return std::vector<double>{v, branch, r.amplitude, r.frequency, r.growth, r.failed ? 1.0 : 0.0};
-  };
   const std::filesystem::path out_path(points_csv);
   if (out_path.has_parent_path()) std::filesystem::create_directories(out_path.parent_path());
   StateStore states(points_csv + ".down.states", scenario.model.n_states);
 
-  // Phase 1: the plain sweep, keeping the down branch's final states.
-  SweepOptions so;
-  so.output = points_csv + ".sweep.csv";
-  so.result_columns = columns;
-  so.threads = o.threads;
-  so.label = o.label;
-  std::vector<SweepResult> rows = run_sweep(points, [&](const SweepPoint& p) {
-    const double v = p.params[0];
-    const bool down = p.params[1] > 0.5;
-    Eigen::VectorXd x_end;
-    const PointOutcome r = run_point(scenario, v, disturbed_state(scenario, down ? o.large_disturbance
-                                                                             : o.small_disturbance),
-                                     o, down ? &x_end : nullptr);
-    if (down && !r.failed) states.put(p.key, x_end);
-    return values(v, p.params[1], r);
-  }, so);
+  // Phase 1: the plain sweep, keeping the down branch's final states (threads only).
+  std::vector<SweepResult> rows = run_sweep(
+      plan.points, [&](const SweepPoint& p) { return run_sweep_point(scenario, o, plan, p, &states); },
+      sweep_options(o, points_csv + ".sweep.csv", false));
 
   // Phase 2: the chain below V_h. Down rows in descending speed (the order of `points`).
   std::vector<SweepResult*> down;
-  for (const auto& p : points)
-    if (p.params[1] > 0.5)
+  for (const auto& p : plan.points)
+    if (plan.branch[static_cast<std::size_t>(p.index)] == Branch::down)
       for (auto& r : rows)
         if (r.index == p.index) down.push_back(&r);
   long lowest = -1;  // position in `down` of V_h
   for (std::size_t i = 0; i < down.size() && is_hunting(point_of(*down[i]), o); ++i) lowest = static_cast<long>(i);
   const std::string chain_csv = points_csv + ".chain.csv";
-  std::vector<SweepResult> chain = read_finished_points(chain_csv, columns.size());
+  std::vector<SweepResult> chain = read_finished_points(chain_csv, kPointColumns.size());
   if (lowest >= 0 && static_cast<std::size_t>(lowest) + 1 < down.size()) {
     const SweepResult& vh = *down[static_cast<std::size_t>(lowest)];
     std::string from = vh.key;
@@ -393,7 +368,7 @@ BifurcationResult continuation_sweep(const Scenario& scenario, const Bifurcation
     for (std::size_t i = static_cast<std::size_t>(lowest) + 1; i < down.size() && states.find(from); ++i) {
       SweepResult& target = *down[i];
       const double v = target.values[0];
-      const std::string key = "chain:" + target.key.substr(target.key.find(':') + 1);
+      const std::string key = point_key(Branch::down, true, v);
       auto done = std::find_if(chain.begin(), chain.end(), [&](const SweepResult& r) { return r.key == key; });
       if (done == chain.end() || (is_hunting(point_of(*done), o) && !point_of(*done).failed && !states.find(key))) {
         spdlog::info("{}: following the branch down to {:.1f} km/h", o.label, v * 3.6);
@@ -401,8 +376,8 @@ BifurcationResult continuation_sweep(const Scenario& scenario, const Bifurcation
         const PointOutcome r = run_point(scenario, v, *states.find(from), o, &x_end);
         if (!r.failed) states.put(key, x_end);
         if (done != chain.end()) chain.erase(done);
-        chain.push_back({target.index, key, values(v, 1.0, r)});
-        write_sweep_file(chain_csv, columns, chain);
+        chain.push_back({target.index, key, point_row(v, Branch::down, r)});
+        write_sweep_file(chain_csv, kPointColumns, chain);
         done = chain.end() - 1;
       }
       target.key = done->key;
@@ -412,7 +387,7 @@ BifurcationResult continuation_sweep(const Scenario& scenario, const Bifurcation
       from = key;
     }
   }
-  write_sweep_file(points_csv, columns, rows);
+  write_sweep_file(points_csv, kPointColumns, rows);
   return collect(rows, o);
 }
 

@@ -52,13 +52,18 @@ struct BifurcationOptions {
   // only (the final states are kept in one file).
   bool continuation = false;
   int threads = 0;                   // 0: all cores
-  bool use_mpi = false;
+  bool use_mpi = false;              // spread the points over mpirun ranks (MPI started in main())
   std::string label = "bifurcation sweep";  // progress messages
 };
 
+// Branch of a bifurcation sweep: down = from the large initial lateral shift
+// (reaches the hunting limit cycle), up = from the small one.
+enum class Branch { down, up };
+const char* branch_name(Branch b);  // "down", "up"
+
 struct BifurcationPoint {
   double speed = 0.0;                // [m/s]
-  std::string branch;                // "down" or "up"
+  Branch branch = Branch::down;
   double amplitude = 0.0;            // max over wheelsets of the settled amplitude [m]
   double frequency = 0.0;            // of the wheelset with the largest amplitude [Hz]
   double growth = 0.0;               // relative amplitude change over the tail

@@ -2,6 +2,7 @@
 #include "engine/analysis/mode_sweep.hpp"
 
 #include "core/errors.hpp"
+#include "engine/analysis/critical_speed.hpp"
 
 namespace railsim::engine {
 
@@ -18,6 +19,13 @@ std::vector<std::vector<Mode>> modes_versus_speed(const Scenario& sc, const std:
     out.push_back(std::move(md));
   }
   return out;
+}
+
+ModeSweep mode_sweep(const Scenario& sc, const std::vector<double>& speeds, int count, double v_lo, double v_hi) {
+  ModeSweep r;
+  r.modes = modes_versus_speed(sc, speeds, count);
+  r.linear_critical_speed = linear_critical_speed(sc, v_lo, v_hi);
+  return r;
 }
 
 }  // namespace railsim::engine

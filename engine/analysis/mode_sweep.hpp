@@ -3,8 +3,9 @@
 // running on perfect track (engine/linearisation.hpp), the `count` least
 // damped oscillatory ones (frequency f = omega / 2 pi [Hz], damping ratio
 // zeta = -sigma / |s|), ranked per speed by decreasing real part (not tracked
-// across speeds: where two modes cross, their ranks swap). What `railsim modes`
-// and the Python module's railsim.modes() call.
+// across speeds: where two modes cross, their ranks swap). What the Python
+// module's railsim.modes() calls; `railsim modes` calls mode_sweep, which adds
+// the linear critical speed over [v_lo, v_hi] (engine/analysis/critical_speed.hpp).
 #pragma once
 
 #include <vector>
@@ -17,5 +18,12 @@ namespace railsim::engine {
 // modes[i]: the least damped oscillatory modes at speeds[i] (at most `count`).
 std::vector<std::vector<Mode>> modes_versus_speed(const Scenario& scenario, const std::vector<double>& speeds,
                                                   int count);
+
+struct ModeSweep {
+  std::vector<std::vector<Mode>> modes;  // per speed, as modes_versus_speed
+  double linear_critical_speed = 0.0;    // [m/s]; NaN: stable over [v_lo, v_hi]
+};
+ModeSweep mode_sweep(const Scenario& scenario, const std::vector<double>& speeds, int count, double v_lo,
+                     double v_hi);
 
 }  // namespace railsim::engine

@@ -256,7 +256,7 @@ ReductionStudyResult reduction_study(const Scenario& base, const ReductionStudyO
       e.below_state.clear();
       if (std::isfinite(e.critical))
         for (const auto& p : e.bifurcation.points)
-          if (p.branch == "down" && std::fabs(p.speed - (e.critical - b.v_step)) < 1e-6 * b.v_step)
+          if (p.branch == Branch::down && std::fabs(p.speed - (e.critical - b.v_step)) < 1e-6 * b.v_step)
             e.below_state = point_state_name(point_state(p, b));
       e.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - te).count();
       spdlog::info("reductions: {}: critical speed {:.1f} km/h ({:.0f} s)", e.label, e.critical * kKmh, e.wall_time);

@@ -28,22 +28,37 @@ namespace railsim::engine {
 
 namespace fs = std::filesystem;
 
-MpiContext mpi_context() {
-  MpiContext ctx;
+MpiSession::MpiSession(int* argc, char*** argv) {
 #ifdef RAILSIM_HAVE_MPI
   int initialised = 0;
   MPI_Initialized(&initialised);
-  // Only treat the run as distributed when launched by mpirun (or already initialised).
-  const bool launched = std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMI_SIZE") || initialised;
-  if (!launched) return ctx;
-  if (!initialised) {
-    MPI_Init(nullptr, nullptr);
-    std::atexit([] {
-      int finalised = 0;
-      MPI_Finalized(&finalised);
-      if (!finalised) MPI_Finalize();
-    });
+  // Only a run launched by mpirun is distributed.
+  const bool launched = std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMI_SIZE");
+  if (launched && !initialised) {
+    MPI_Init(argc, argv);
+    owns_ = true;
   }
+#else
+  (void)argc;
+  (void)argv;
+#endif
+}
+
+MpiSession::~MpiSession() {
+#ifdef RAILSIM_HAVE_MPI
+  int finalised = 0;
+  MPI_Finalized(&finalised);
+  if (owns_ && !finalised) MPI_Finalize();
+#endif
+}
+
+MpiContext mpi_context() {
+  MpiContext ctx;
+#ifdef RAILSIM_HAVE_MPI
+  int initialised = 0, finalised = 0;
+  MPI_Initialized(&initialised);
+  MPI_Finalized(&finalised);
+  if (!initialised || finalised) return ctx;
   MPI_Comm_rank(MPI_COMM_WORLD, &ctx.rank);
   MPI_Comm_size(MPI_COMM_WORLD, &ctx.size);
   ctx.active = ctx.size > 1;

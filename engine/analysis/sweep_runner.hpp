@@ -1,6 +1,7 @@
 // Resumable parallel sweeps: run independent points (speeds of a bifurcation
-// sweep, contact models of a comparison, ...) on a thread pool or over MPI
-// ranks, writing every finished point at once.
+// sweep, reduction-factor entries of a study, ...) on a thread pool or over MPI
+// ranks (options.use_mpi, when the program started MPI: MpiSession below),
+// writing every finished point at once.
 //
 // Files, for an output path OUT (e.g. DIR/bifurcation_points.csv):
 //   OUT.part<r>   one per process (MPI rank r, or 0 for threads): a CSV line is
@@ -57,13 +58,28 @@ std::vector<SweepResult> read_finished_points(const std::string& output, std::si
 void write_sweep_file(const std::string& output, const std::vector<std::string>& columns,
                       const std::vector<SweepResult>& rows);
 
-// MPI context (rank 0 of 1 without MPI, or when not launched by mpirun).
-// mpi_context() initialises MPI on its first call under mpirun and registers
-// MPI_Finalize at exit; later calls return the same rank and size.
+// MPI for the life of a program, started explicitly: construct one MpiSession
+// first thing in main() (cli/main.cpp, the sweep probe of the tests). Launched
+// by mpirun (OMPI_COMM_WORLD_SIZE or PMI_SIZE in the environment) it calls
+// MPI_Init, and MPI_Finalize when it goes out of scope; otherwise, or built
+// without MPI, it does nothing. Nothing else initialises MPI.
+class MpiSession {
+ public:
+  MpiSession(int* argc, char*** argv);
+  ~MpiSession();
+  MpiSession(const MpiSession&) = delete;
+  MpiSession& operator=(const MpiSession&) = delete;
+
+ private:
+  bool owns_ = false;  // this session called MPI_Init
+};
+
+// The rank and size of the running MPI job: rank 0 of 1 (not active) unless MPI
+// was initialised (by an MpiSession). A plain query: it never starts MPI.
 struct MpiContext {
   int rank = 0;
   int size = 1;
-  bool active = false;
+  bool active = false;  // size > 1
 };
 MpiContext mpi_context();
 

@@ -130,7 +130,7 @@ py::dict critical_speed(const engine::Scenario& base, const std::string& method,
     std::vector<bool> failed, continued;
     for (const auto& p : r.points) {
       v.push_back(p.speed * 3.6), amp.push_back(p.amplitude * 1e3), freq.push_back(p.frequency);
-      growth.push_back(p.growth), branch.push_back(p.branch), failed.push_back(p.failed);
+      growth.push_back(p.growth), branch.push_back(engine::branch_name(p.branch)), failed.push_back(p.failed);
       continued.push_back(p.continued);
     }
     py::dict pts;

@@ -8,6 +8,7 @@
 using namespace railsim::engine;
 
 int main(int argc, char** argv) {
+  const MpiSession mpi(&argc, &argv);
   if (argc < 2) return 2;
   std::vector<SweepPoint> pts;
   for (int i = 0; i < 16; ++i) pts.push_back({i, "p" + std::to_string(i), {0.1 * i}});

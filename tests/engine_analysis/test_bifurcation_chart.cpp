@@ -17,7 +17,7 @@ namespace {
 BifurcationPoint point(double v, double amp_mm, double growth, bool failed = false) {
   BifurcationPoint p;
   p.speed = v;
-  p.branch = "down";
+  p.branch = Branch::down;
   p.amplitude = amp_mm * 1e-3;
   p.growth = growth;
   p.failed = failed;

@@ -21,7 +21,7 @@ using namespace railsim::engine;
 
 namespace {
 
-const BifurcationPoint* find_point(const BifurcationResult& r, const std::string& branch, double speed) {
+const BifurcationPoint* find_point(const BifurcationResult& r, Branch branch, double speed) {
   for (const auto& p : r.points)
     if (p.branch == branch && std::abs(p.speed - speed) < 1e-6) return &p;
   return nullptr;
@@ -60,9 +60,9 @@ TEST_CASE("single wheelset, linear model: bifurcation and ramping find the linea
     // Clearly above: hunting on both branches, and where both have settled
     // (|growth| < 1 % over the tail) on the same limit cycle (one attractor).
     if (p.speed > v_lin + o.v_step) CHECK(is_hunting(p, o));
-    const auto* up = find_point(r, "up", p.speed);
+    const auto* up = find_point(r, Branch::up, p.speed);
     REQUIRE(up != nullptr);
-    if (p.branch == "down" && std::abs(p.growth) < 0.01 && std::abs(up->growth) < 0.01 && p.amplitude > o.threshold)
+    if (p.branch == Branch::down && std::abs(p.growth) < 0.01 && std::abs(up->growth) < 0.01 && p.amplitude > o.threshold)
       CHECK(up->amplitude == Approx(p.amplitude).epsilon(0.02));
   }
 
@@ -102,8 +102,8 @@ TEST_CASE("single wheelset, S1002/UIC60: subcritical branch below the linear cri
   CHECK(r.nonlinear_critical_speed < 0.85 * v_lin);
   int coexisting = 0;
   for (const auto& p : r.points) {
-    if (p.branch != "down" || !is_hunting(p, o)) continue;
-    const auto* up = find_point(r, "up", p.speed);
+    if (p.branch != Branch::down || !is_hunting(p, o)) continue;
+    const auto* up = find_point(r, Branch::up, p.speed);
     REQUIRE(up != nullptr);
     CHECK(p.amplitude > 3e-3);  // flange-contact limit cycle (S1002 flange at ~6-7 mm)
     if (!is_hunting(*up, o)) ++coexisting;
@@ -210,7 +210,7 @@ TEST_CASE("bifurcation sweep with continuation follows the branch to its fold an
   // On the branch both settle on the same limit cycle.
   for (const auto& p : cont.points) {
     if (!is_hunting(p, o)) continue;
-    const auto* q = find_point(fixed, "down", p.speed);
+    const auto* q = find_point(fixed, Branch::down, p.speed);
     REQUIRE(q != nullptr);
     if (is_hunting(*q, o)) CHECK(p.amplitude == Approx(q->amplitude).epsilon(0.02));
   }
