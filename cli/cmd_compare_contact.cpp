@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/support_option_checks.hpp"
 #include "cli/support_contact_cases.hpp"
 #include "contact/mim_table.hpp"
 #include "contact/reduction.hpp"
@@ -118,22 +119,14 @@ std::vector<Candidate> make_candidates(const CompareArgs& a) {
   for (const auto& n : names)
     if (!seen.insert(n).second) throw InputError("--models: model '" + n + "' listed twice");
   // Validate every name before any expensive work (unknown names: InputError with the list).
-  for (const auto& n : names)
-    if (n != kMimTable) {
-      bool known = false;
-      for (const auto& e : contact::tangential_models()) known = known || n == e.name;
-      if (!known)
-        throw InputError("--models: unknown contact model '" + n + "' (known models: " +
-                         contact::tangential_model_names() + ")");
-    }
+  for (const auto& n : names) tangential_model_option("--models", n);
   const bool table_wanted = seen.count(kMimTable) > 0;
   std::vector<Candidate> out;
   for (const auto& n : names) {
     if (n == kMimTable) continue;
     Candidate c;
     c.name = n;
-    for (const auto& e : contact::tangential_models())
-      if (n == e.name) c.description = e.description;
+    c.description = contact::find_tangential_model(n).description;
     c.model = contact::make_tangential_model(n);
     c.ws = c.model->make_workspace();
     out.push_back(std::move(c));

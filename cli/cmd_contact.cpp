@@ -10,6 +10,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "cli/support_option_checks.hpp"
 #include "cli/support_contact_cases.hpp"
 #include "contact/reduction.hpp"
 #include "contact/registry.hpp"
@@ -31,16 +32,7 @@ struct ContactOptions {
 };
 
 int run_contact(const ContactOptions& o) {
-  bool known = false;
-  const char* spin = "";
-  for (const auto& e : contact::tangential_models())
-    if (o.model == e.name) {
-      known = true;
-      spin = e.spin;
-    }
-  if (!known)
-    throw InputError("--model: unknown contact model '" + o.model + "' (known models: " +
-                     contact::tangential_model_names() + ")");
+  const char* spin = tangential_model_option("--model", o.model).spin;
   // Inputs first: a cached-table model may take a while to build on first use.
   ContactCaseSet set = load_contact_cases(o.cases);
   if (!o.reduction.empty()) set_reduction(set, contact::parse_reduction(o.reduction, "--reduction"));

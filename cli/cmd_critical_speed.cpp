@@ -28,6 +28,7 @@
 #include <sstream>
 
 #include "cli/commands.hpp"
+#include "cli/support_option_checks.hpp"
 #include "cli/support_speed_range.hpp"
 #include "contact/reduction.hpp"
 #include "contact/registry.hpp"
@@ -285,7 +286,7 @@ int run_critical_speed(const CriticalSpeedArgs& args) {
   if (reduction_given) spec = contact::parse_reduction_spec(a.reduction, "--reduction");
   std::vector<contact::ReductionSpec> study_entries;
   if (!a.reductions.empty()) study_entries = contact::parse_reduction_list(a.reductions, "--reductions");
-  if (!a.model.empty()) contact::make_tangential_model(a.model == "coefficients" ? "linear" : a.model);  // validates the name
+  if (!a.model.empty()) tangential_model_option("--model", a.model);
   std::error_code ec;
   fs::create_directories(a.out, ec);
   if (ec) throw InputError("--out " + a.out + ": cannot create the folder (" + ec.message() + ")");
@@ -301,7 +302,7 @@ int run_critical_speed(const CriticalSpeedArgs& args) {
     for (std::string n; std::getline(ss, n, ',');)
       if (!n.empty()) names.push_back(n);
     for (const auto& n : names)
-      if (n != "coefficients") contact::make_tangential_model(n);
+      tangential_model_option("--models", n);
     // Each model's files as soon as it is done (rank 0): a later model's failure keeps them.
     std::optional<results::CsvWriter> csv;
     if (mpi.rank == 0)

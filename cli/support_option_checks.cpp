@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "core/errors.hpp"
+
 namespace railsim::cli {
 
 namespace {
@@ -69,6 +71,14 @@ std::string unknown_subcommand(const CLI::App& app, int argc, const char* const*
     }
   }
   return "";
+}
+
+const contact::TangentialModelEntry& tangential_model_option(const std::string& option, const std::string& name) {
+  try {
+    return contact::find_tangential_model(name);
+  } catch (const InputError& e) {
+    throw InputError(option + ": " + e.what());
+  }
 }
 
 }  // namespace railsim::cli

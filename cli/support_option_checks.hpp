@@ -7,6 +7,8 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
+#include "contact/registry.hpp"
+
 namespace railsim::cli {
 
 // Add the finite-number and non-empty-output checks to every option of
@@ -16,6 +18,11 @@ void add_common_checks(CLI::App& app);
 // The first command-line word that should name a subcommand but names none
 // ("" when there is none), skipping the values of the top-level options.
 std::string unknown_subcommand(const CLI::App& app, int argc, const char* const* argv);
+
+// The registry entry of the tangential model `name` given by `option` (no
+// model is built: mim_table's table is not loaded); an unknown name is an
+// InputError "OPTION: unknown contact model 'x' (known models: ...)".
+const contact::TangentialModelEntry& tangential_model_option(const std::string& option, const std::string& name);
 
 // "run, critical-speed, ..." in registration order.
 std::string subcommand_names(const CLI::App& app);
