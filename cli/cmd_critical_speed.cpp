@@ -70,53 +70,33 @@ struct CriticalSpeedArgs {
   double deceleration = NAN;                          // m/s^2
   bool up_branch = true;
   bool continuation_on = false, continuation_off = false;  // neither: the scenario's setting
-  int continuation = -1;  // resolved: 0 off, 1 on
   int threads = 0;
-  double ramp_start_kmh = 0.0, ramp_disturbance = 0.0;  // from the scenario only
-  std::string ramp_start_source;                       // where the ramp's start speed came from
 };
 
-// Command-line values where given, else the scenario's settings.
-CriticalSpeedArgs resolve_settings(CriticalSpeedArgs a, const engine::CriticalSpeedSettings& s) {
-  auto pick = [](double& cli, double scen) {
-    if (std::isnan(cli)) cli = scen;
-  };
-  const bool range_given = !std::isnan(a.v_max_kmh);
-  pick(a.v_min_kmh, s.v_min_kmh);
-  pick(a.v_max_kmh, s.v_max_kmh);
-  pick(a.v_step_kmh, s.v_step_kmh);
-  pick(a.duration, s.duration);
-  const bool disturbance_given = !std::isnan(a.large);
-  pick(a.large, s.disturbance_mm);
-  pick(a.small, s.small_disturbance_mm);
-  pick(a.threshold, s.threshold_mm);
-  pick(a.deceleration, s.deceleration);
-  a.continuation = a.continuation_on ? 1 : a.continuation_off ? 0 : (s.continuation ? 1 : 0);
-  a.ramp_start_kmh = range_given || s.ramp_start_kmh <= 0 ? a.v_max_kmh : s.ramp_start_kmh;
-  a.ramp_start_source = range_given ? "--v-max"
-                        : s.ramp_start_kmh > 0 ? "the scenario's critical_speed.ramping.v_start_kmh"
-                                               : "v_max_kmh of the scenario's critical_speed section (or the default)";
-  a.ramp_disturbance = disturbance_given || s.ramp_disturbance_mm <= 0 ? a.large : s.ramp_disturbance_mm;
-  return a;
-}
-
-// The resolved settings in SI: the engine's units (km/h and mm stay on the command line).
-engine::CriticalSpeedStudySettings study_settings(const CriticalSpeedArgs& a) {
+// The settings in SI (the engine's units): command-line values (km/h, mm)
+// where given, else the scenario's critical_speed section (already SI).
+engine::CriticalSpeedStudySettings study_settings(const CriticalSpeedArgs& a, const engine::CriticalSpeedSettings& sc) {
+  auto pick = [](double cli, double unit, double scen) { return std::isnan(cli) ? scen : cli * unit; };
+  constexpr double mm = 1e-3;
   engine::CriticalSpeedStudySettings s;
   s.method = engine::parse_critical_speed_method(a.method, "--method");
-  s.v_min = a.v_min_kmh / 3.6;
-  s.v_max = a.v_max_kmh / 3.6;
-  s.v_step = a.v_step_kmh / 3.6;
-  s.duration = a.duration;
-  s.large_disturbance = a.large * 1e-3;
-  s.small_disturbance = a.small * 1e-3;
-  s.threshold = a.threshold * 1e-3;
-  s.deceleration = a.deceleration;
+  const bool range_given = !std::isnan(a.v_max_kmh);
+  s.v_min = std::isnan(a.v_min_kmh) ? sc.v_min : a.v_min_kmh / 3.6;
+  s.v_max = std::isnan(a.v_max_kmh) ? sc.v_max : a.v_max_kmh / 3.6;
+  s.v_step = std::isnan(a.v_step_kmh) ? sc.v_step : a.v_step_kmh / 3.6;
+  s.duration = pick(a.duration, 1.0, sc.duration);
+  const bool disturbance_given = !std::isnan(a.large);
+  s.large_disturbance = pick(a.large, mm, sc.disturbance);
+  s.small_disturbance = pick(a.small, mm, sc.small_disturbance);
+  s.threshold = pick(a.threshold, mm, sc.threshold);
+  s.deceleration = pick(a.deceleration, 1.0, sc.deceleration);
   s.up_branch = a.up_branch;
-  s.continuation = a.continuation == 1;
-  s.ramp_start = a.ramp_start_kmh / 3.6;
-  s.ramp_disturbance = a.ramp_disturbance * 1e-3;
-  s.ramp_start_source = a.ramp_start_source;
+  s.continuation = a.continuation_on || (!a.continuation_off && sc.continuation);
+  s.ramp_start = range_given || sc.ramp_start <= 0 ? s.v_max : sc.ramp_start;
+  s.ramp_start_source = range_given ? "--v-max"
+                        : sc.ramp_start > 0 ? "the scenario's critical_speed.ramping.v_start_kmh"
+                                            : "v_max_kmh of the scenario's critical_speed section (or the default)";
+  s.ramp_disturbance = disturbance_given || sc.ramp_disturbance <= 0 ? s.large_disturbance : sc.ramp_disturbance;
   s.threads = a.threads;
   return s;
 }
@@ -128,9 +108,9 @@ std::string kmh(double v) {
   return buf;
 }
 
-void print_ramp_start(const CriticalSpeedArgs& a, const char* suffix) {
-  std::printf("ramping from %.1f km/h (%s) down to %.1f km/h at %.3g m/s^2%s\n", a.ramp_start_kmh,
-              a.ramp_start_source.c_str(), a.v_min_kmh, a.deceleration, suffix);
+void print_ramp_start(const engine::CriticalSpeedStudySettings& s, const char* suffix) {
+  std::printf("ramping from %.1f km/h (%s) down to %.1f km/h at %.3g m/s^2%s\n", s.ramp_start * 3.6,
+              s.ramp_start_source.c_str(), s.v_min * 3.6, s.deceleration, suffix);
 }
 
 // The chart (and for ramping the record) of one analysis in `dir`.
@@ -167,23 +147,20 @@ std::string percent_cell(double v) {
 
 // --reductions: the study (engine/analysis/reduction_study.hpp), its files and table.
 int run_reduction_study(const engine::Scenario& base, const CriticalSpeedArgs& a,
+                        const engine::CriticalSpeedStudySettings& s,
                         const std::vector<contact::ReductionSpec>& entries, const engine::MpiContext& mpi) {
-  const engine::CriticalSpeedStudySettings s = study_settings(a);
   engine::ReductionStudyOptions o;
   o.entries = entries;
   o.method = a.method;
   o.bifurcation = engine::bifurcation_options(s);
   o.ramping = engine::ramping_options(s);
-  // The bracket from the values as given, (1.5 v_kmh) / 3.6: not 1.5 (v_kmh / 3.6) as
-  // linear_bracket_high, which differs in the last bit for some speeds (e.g. 200 km/h)
-  // and so would move the study's linear critical speeds by 1e-16 relative.
-  o.linear_v_lo = std::max(1.0, 0.25 * a.v_min_kmh / 3.6);
-  o.linear_v_hi = 1.5 * a.v_max_kmh / 3.6;
+  o.linear_v_lo = std::max(1.0, 0.25 * s.v_min);
+  o.linear_v_hi = engine::linear_bracket_high(s);
   o.out_dir = a.out;
   o.cache_dir = a.cache_dir;
   o.tangential_model = a.model;
   o.threads = a.threads;
-  if (mpi.rank == 0 && a.method == "ramping") print_ramp_start(a, ", every entry");
+  if (mpi.rank == 0 && a.method == "ramping") print_ramp_start(s, ", every entry");
   const engine::ReductionStudyResult r = engine::reduction_study(base, o);
   if (mpi.rank != 0) return kExitSuccess;
 
@@ -244,11 +221,11 @@ int run_reduction_study(const engine::Scenario& base, const CriticalSpeedArgs& a
               base.model.coupling.options().tangential.c_str(), base.model.coupling.options().material.mu,
               a.method.c_str());
   if (a.method == "bifurcation")
-    std::printf(" over %.0f..%.0f km/h, step %.3g km/h, %.3g s per point%s\n", a.v_min_kmh, a.v_max_kmh, a.v_step_kmh,
-                a.duration, a.continuation == 1 ? ", with continuation" : "");
+    std::printf(" over %.0f..%.0f km/h, step %.3g km/h, %.3g s per point%s\n", s.v_min * 3.6, s.v_max * 3.6,
+                s.v_step * 3.6, s.duration, s.continuation ? ", with continuation" : "");
   else
-    std::printf(" from %.1f km/h (%s) at %.3g m/s^2\n", a.ramp_start_kmh, a.ramp_start_source.c_str(),
-                a.deceleration);
+    std::printf(" from %.1f km/h (%s) at %.3g m/s^2\n", s.ramp_start * 3.6, s.ramp_start_source.c_str(),
+                s.deceleration);
   std::printf("\n  %-38s %6s %6s %6s %10s %8s %10s %8s %9s\n", "entry", "k11", "k22", "k23", "V_NL km/h", "change",
               "V_L km/h", "change", "fold mm");
   for (const auto& e : r.entries) {
@@ -269,14 +246,14 @@ int run_reduction_study(const engine::Scenario& base, const CriticalSpeedArgs& a
   return kExitSuccess;
 }
 
-int run_critical_speed(const CriticalSpeedArgs& args) {
+int run_critical_speed(const CriticalSpeedArgs& a) {
   const engine::MpiContext mpi = engine::mpi_context();
   // One job per output folder (the ranks of one MPI job share it: rank 0 holds the lock).
   std::optional<OutputLock> lock;
-  if (mpi.rank == 0) lock.emplace(args.out);
-  engine::Scenario base = engine::load_scenario(args.scenario);
-  const CriticalSpeedArgs a = resolve_settings(args, base.critical_speed);
-  check_speed_range(a.v_min_kmh, a.v_max_kmh, a.v_step_kmh);
+  if (mpi.rank == 0) lock.emplace(a.out);
+  engine::Scenario base = engine::load_scenario(a.scenario);
+  const engine::CriticalSpeedStudySettings s = study_settings(a, base.critical_speed);
+  check_speed_range(s.v_min * 3.6, s.v_max * 3.6, s.v_step * 3.6);
   if (!a.reduction.empty() && !a.reductions.empty())
     throw InputError("--reduction and --reductions: give one of them (--reductions runs every entry of its list)");
   if (!a.reductions.empty() && a.compare_models)
@@ -290,12 +267,11 @@ int run_critical_speed(const CriticalSpeedArgs& args) {
   std::error_code ec;
   fs::create_directories(a.out, ec);
   if (ec) throw InputError("--out " + a.out + ": cannot create the folder (" + ec.message() + ")");
-  if (!study_entries.empty()) return run_reduction_study(base, a, study_entries, mpi);
+  if (!study_entries.empty()) return run_reduction_study(base, a, s, study_entries, mpi);
   // The reduction resolved once (a layer's factors for this scenario's patch).
   if (reduction_given) base = engine::with_reduction(base, spec, "--reduction", a.cache_dir);
 
-  const engine::CriticalSpeedStudySettings s = study_settings(a);
-  if (mpi.rank == 0 && s.method == engine::CriticalSpeedMethod::ramping) print_ramp_start(a, "");
+  if (mpi.rank == 0 && s.method == engine::CriticalSpeedMethod::ramping) print_ramp_start(s, "");
   if (a.compare_models) {
     std::vector<std::string> names;
     std::stringstream ss(a.models);
@@ -366,10 +342,10 @@ int run_critical_speed(const CriticalSpeedArgs& args) {
   std::printf("  vehicle            %s\n", sc.model.vehicle_name.c_str());
   std::printf("  contact            %s\n", sc.model.coupling.describe().c_str());
   if (a.method == "ramping")
-    std::printf("  method             ramping from %.1f km/h (%s) down to %.0f km/h\n", a.ramp_start_kmh,
-                a.ramp_start_source.c_str(), a.v_min_kmh);
+    std::printf("  method             ramping from %.1f km/h (%s) down to %.0f km/h\n", s.ramp_start * 3.6,
+                s.ramp_start_source.c_str(), s.v_min * 3.6);
   else
-    std::printf("  method             %s over %.0f..%.0f km/h\n", a.method.c_str(), a.v_min_kmh, a.v_max_kmh);
+    std::printf("  method             %s over %.0f..%.0f km/h\n", a.method.c_str(), s.v_min * 3.6, s.v_max * 3.6);
   std::printf("  critical speed     %s\n", kmh(o.critical).c_str());
   std::printf("  linear crit. speed %s (eigenvalues)\n", kmh(o.linear).c_str());
   if (r.with_baseline) {

@@ -59,20 +59,20 @@ CriticalSpeedSettings load_critical_speed_settings(const InputNode& n) {
   n.allow_only({"v_min_kmh", "v_max_kmh", "v_step_kmh", "duration", "disturbance_mm", "small_disturbance_mm",
                 "threshold_mm", "continuation", "ramping"});
   CriticalSpeedSettings c;
-  c.v_min_kmh = n.has("v_min_kmh") ? n.in_range("v_min_kmh", 0.0, 720.0, true) : c.v_min_kmh;
-  c.v_max_kmh = n.has("v_max_kmh") ? n.in_range("v_max_kmh", 0.0, 720.0, true) : c.v_max_kmh;
-  if (c.v_max_kmh <= c.v_min_kmh) n.fail("need v_min_kmh < v_max_kmh");
-  c.v_step_kmh = n.has("v_step_kmh") ? n.in_range("v_step_kmh", 0.0, 720.0, true) : c.v_step_kmh;
-  c.duration = n.has("duration") ? n.in_range("duration", 0.5, 600.0) : c.duration;
-  c.disturbance_mm = n.has("disturbance_mm") ? n.in_range("disturbance_mm", 0.01, 20.0) : c.disturbance_mm;
-  c.small_disturbance_mm =
-      n.has("small_disturbance_mm") ? n.in_range("small_disturbance_mm", 0.001, 20.0) : c.small_disturbance_mm;
-  c.threshold_mm = n.has("threshold_mm") ? n.in_range("threshold_mm", 0.001, 20.0) : c.threshold_mm;
+  constexpr double mm = 1e-3;  // the file's lengths; speeds / 3.6 (the file's km/h)
+  if (n.has("v_min_kmh")) c.v_min = n.in_range("v_min_kmh", 0.0, 720.0, true) / 3.6;
+  if (n.has("v_max_kmh")) c.v_max = n.in_range("v_max_kmh", 0.0, 720.0, true) / 3.6;
+  if (c.v_max <= c.v_min) n.fail("need v_min_kmh < v_max_kmh");
+  if (n.has("v_step_kmh")) c.v_step = n.in_range("v_step_kmh", 0.0, 720.0, true) / 3.6;
+  if (n.has("duration")) c.duration = n.in_range("duration", 0.5, 600.0);
+  if (n.has("disturbance_mm")) c.disturbance = n.in_range("disturbance_mm", 0.01, 20.0) * mm;
+  if (n.has("small_disturbance_mm")) c.small_disturbance = n.in_range("small_disturbance_mm", 0.001, 20.0) * mm;
+  if (n.has("threshold_mm")) c.threshold = n.in_range("threshold_mm", 0.001, 20.0) * mm;
   if (auto cn = n.find("continuation")) c.continuation = cn->as_bool();
   if (auto r = n.find("ramping")) {
     r->allow_only({"v_start_kmh", "disturbance_mm", "deceleration"});
-    if (r->has("v_start_kmh")) c.ramp_start_kmh = r->in_range("v_start_kmh", 0.0, 720.0, true);
-    if (r->has("disturbance_mm")) c.ramp_disturbance_mm = r->in_range("disturbance_mm", 0.01, 20.0);
+    if (r->has("v_start_kmh")) c.ramp_start = r->in_range("v_start_kmh", 0.0, 720.0, true) / 3.6;
+    if (r->has("disturbance_mm")) c.ramp_disturbance = r->in_range("disturbance_mm", 0.01, 20.0) * mm;
     if (r->has("deceleration")) c.deceleration = r->in_range("deceleration", 0.001, 10.0);
   }
   return c;

@@ -61,16 +61,16 @@
 namespace railsim::engine {
 
 // Settings of `railsim critical-speed` for this scenario (the command line
-// overrides them). Speeds in km/h, lateral shifts in mm, as on the command line.
+// overrides them), in SI: the file's km/h and mm are converted when read.
 struct CriticalSpeedSettings {
-  double v_min_kmh = 80.0, v_max_kmh = 300.0, v_step_kmh = 20.0;
+  double v_min = 80.0 / 3.6, v_max = 300.0 / 3.6, v_step = 20.0 / 3.6;  // sweep range and step [m/s]
   double duration = 6.0;               // simulated time per sweep point [s]
-  double disturbance_mm = 8.0;         // down branch
-  double small_disturbance_mm = 0.5;   // up branch
-  double threshold_mm = 0.5;           // settled amplitude that counts as hunting
+  double disturbance = 8e-3;           // lateral shift that starts the down branch [m]
+  double small_disturbance = 0.5e-3;   // up branch [m]
+  double threshold = 0.5e-3;           // settled amplitude that counts as hunting [m]
   bool continuation = false;           // path following on the down branch
-  double ramp_start_kmh = 0.0;         // 0: v_max_kmh
-  double ramp_disturbance_mm = 0.0;    // 0: disturbance_mm
+  double ramp_start = 0.0;             // [m/s]; 0: v_max
+  double ramp_disturbance = 0.0;       // [m]; 0: disturbance
   double deceleration = 0.5;           // [m/s^2]
 };
 

@@ -81,13 +81,13 @@ py::dict critical_speed(const engine::Scenario& base, const std::string& method,
   const engine::Scenario sc = engine::with_contact(base, model, kp);
   const engine::CriticalSpeedSettings& s = sc.critical_speed;
   const bool range_given = !std::isnan(v_max_kmh), disturbance_given = !std::isnan(disturbance_mm);
-  v_min_kmh = or_default(v_min_kmh, s.v_min_kmh);
-  v_max_kmh = or_default(v_max_kmh, s.v_max_kmh);
-  v_step_kmh = or_default(v_step_kmh, s.v_step_kmh);
+  v_min_kmh = or_default(v_min_kmh, s.v_min * 3.6);
+  v_max_kmh = or_default(v_max_kmh, s.v_max * 3.6);
+  v_step_kmh = or_default(v_step_kmh, s.v_step * 3.6);
   duration = or_default(duration, s.duration);
-  disturbance_mm = or_default(disturbance_mm, s.disturbance_mm);
-  small_disturbance_mm = or_default(small_disturbance_mm, s.small_disturbance_mm);
-  threshold_mm = or_default(threshold_mm, s.threshold_mm);
+  disturbance_mm = or_default(disturbance_mm, s.disturbance * 1e3);
+  small_disturbance_mm = or_default(small_disturbance_mm, s.small_disturbance * 1e3);
+  threshold_mm = or_default(threshold_mm, s.threshold * 1e3);
   deceleration = or_default(deceleration, s.deceleration);
   const bool cont = continuation < 0 ? s.continuation : continuation == 1;
   if (!(v_min_kmh >= 0 && v_max_kmh > v_min_kmh && v_step_kmh > 0))
@@ -143,8 +143,8 @@ py::dict critical_speed(const engine::Scenario& base, const std::string& method,
     settings["up_branch"] = up_branch, settings["continuation"] = cont;
   } else {
     engine::RampingOptions o;
-    const double start = range_given || s.ramp_start_kmh <= 0 ? v_max_kmh : s.ramp_start_kmh;
-    const double dist = disturbance_given || s.ramp_disturbance_mm <= 0 ? disturbance_mm : s.ramp_disturbance_mm;
+    const double start = range_given || s.ramp_start <= 0 ? v_max_kmh : s.ramp_start * 3.6;
+    const double dist = disturbance_given || s.ramp_disturbance <= 0 ? disturbance_mm : s.ramp_disturbance * 1e3;
     o.v_start = start / 3.6;
     o.v_end = v_lo;
     o.deceleration = deceleration;

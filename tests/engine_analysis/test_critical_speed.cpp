@@ -132,9 +132,9 @@ TEST_CASE("Manchester coach: ramping and bifurcation agree, reduced creep coeffi
   BifurcationOptions o;
   o.v_min = 250 / 3.6;
   o.v_max = 320 / 3.6;
-  o.v_step = cs.v_step_kmh / 3.6;
+  o.v_step = cs.v_step;
   o.duration = cs.duration;
-  o.large_disturbance = cs.disturbance_mm * 1e-3;
+  o.large_disturbance = cs.disturbance;
   o.continuation = false;  // every speed from the fixed disturbance first
   o.up_branch = false;
   o.threads = 2;
@@ -142,7 +142,7 @@ TEST_CASE("Manchester coach: ramping and bifurcation agree, reduced creep coeffi
   REQUIRE(std::isfinite(b.nonlinear_critical_speed));
 
   RampingOptions ro;
-  ro.v_start = cs.ramp_start_kmh / 3.6;
+  ro.v_start = cs.ramp_start;
   ro.v_end = 220 / 3.6;
   ro.deceleration = cs.deceleration;
   const RampingResult rr = ramping(sc, ro);
