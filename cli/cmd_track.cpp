@@ -13,6 +13,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli/commands.hpp"
@@ -43,6 +44,10 @@ int run_track(const TrackOptions& o) {
     throw InputError("--step: expected a positive number (got " + format_number(o.step) + ")");
   if (o.speed_kmh && !(*o.speed_kmh > 0.0 && *o.speed_kmh <= 720.0))
     throw InputError("--speed-kmh: expected a speed in (0, 720] km/h (got " + format_number(*o.speed_kmh) + ")");
+  for (const auto& [name, v] : {std::pair<const char*, double>{"--from", s0}, {"--to", s1}})
+    if (!(v >= 0.0 && v <= track.length()))
+      throw InputError(std::string(name) + ": expected a distance in [0, " + format_number(track.length()) +
+                       "] m (the track's defined length; got " + format_number(v) + ")");
   if (!(s1 > s0)) throw InputError("--from/--to: need from < to (got " + format_number(s0) + ", " + format_number(s1) + ")");
   const double count = engine::track_sample_count(s0, s1, o.step);
   if (count > 2e7) throw InputError("--step " + format_number(o.step) + " gives " + format_number(count) +

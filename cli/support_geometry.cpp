@@ -6,10 +6,42 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <string>
+#include <utility>
 
 #include "core/errors.hpp"
 
 namespace railsim::cli {
+
+namespace {
+
+// The library's range checks name its own keys ('gauge', 'y step'); on the
+// command line the message leads with the option that set the value.
+template <class Check>
+void checked_as_options(const Check& check) {
+  static const std::pair<const char*, const char*> kOptionOf[] = {
+      {"'flange_back' must be smaller", "--flange-back/--gauge"},
+      {"'gauge'", "--gauge"},
+      {"'gauge_depth'", "--gauge-depth"},
+      {"'flange_back'", "--flange-back"},
+      {"'back_face'", "--back-face"},
+      {"'r0 ", "--radius"},
+      {"'inclination'", "--inclination"},
+      {"y range", "--y-min/--y-max"},
+      {"y step", "--y-step"},
+      {"rows requested", "--y-step"},
+  };
+  try {
+    check();
+  } catch (const InputError& e) {
+    const std::string msg = e.what();
+    for (const auto& [key, option] : kOptionOf)
+      if (msg.find(key) != std::string::npos) throw InputError(std::string(option) + ": " + msg);
+    throw;
+  }
+}
+
+}  // namespace
 
 void add_geometry_options(CLI::App& cmd, GeometryOptions& o) {
   cmd.add_option("--wheel", o.wheel, "Wheel profile: file (.prw, .csv) or shipped name S1002")->capture_default_str();
@@ -48,6 +80,7 @@ GeometrySetup make_geometry(const GeometryOptions& o) {
   ts.back_face = o.back_face;
   ts.r0 = o.radius;
   ts.inclination = contact::parse_inclination(o.inclination, "--inclination");
+  checked_as_options([&] { ts.validate(); });
   if (ts.inclination != 0.0 && g.rail->source().find("MBench_UIC60") != std::string::npos && g.rail->source().find("upright") == std::string::npos)
     spdlog::warn("rail profile {} is already canted 1/40; with --inclination {} it is canted twice", g.rail->source(),
                  o.inclination);
@@ -55,7 +88,7 @@ GeometrySetup make_geometry(const GeometryOptions& o) {
   g.grid.y_min = o.y_min;
   g.grid.y_max = o.y_max;
   g.grid.y_step = o.y_step;
-  g.grid.validate();
+  checked_as_options([&] { g.grid.validate(); });
   return g;
 }
 

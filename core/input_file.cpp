@@ -49,7 +49,16 @@ std::string quote_input(std::string_view text) {
     line = line.substr(0, kMaxQuotedChars);
     cut = true;
   }
-  std::string out(line);
+  std::string out;
+  for (const char ch : line) {
+    const auto b = static_cast<unsigned char>(ch);
+    if (b < 0x20 || b == 0x7f) {  // control bytes (a terminal escape, a NUL) shown as \xNN
+      static const char* const hex = "0123456789abcdef";
+      out += {'\\', 'x', hex[b >> 4], hex[b & 0xf]};
+    } else {
+      out += ch;
+    }
+  }
   if (cut) out += "...";
   return out;
 }

@@ -31,7 +31,8 @@ std::string read_input_file(const std::string& path, std::string_view what,
                             std::uintmax_t max_bytes = kMaxInputFileBytes);
 
 // `text` for a message: its first line, at most kMaxQuotedChars characters,
-// with "..." when something was left off.
+// with "..." when something was left off; control bytes (below 0x20, 0x7f:
+// a terminal escape sequence, a NUL) written as \xNN.
 std::string quote_input(std::string_view text);
 
 }  // namespace railsim

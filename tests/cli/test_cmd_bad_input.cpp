@@ -7,9 +7,14 @@
 
 #include <unistd.h>
 
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <random>
 #include <string>
 #include <vector>
 
+#include "processes.hpp"
 #include "core/output_lock.hpp"
 #include "test_support.hpp"
 
@@ -24,10 +29,21 @@ struct CliCase {
   std::vector<std::string> parts;  // expected in the output, in this order
 };
 
+// Every case is bounded in time: timeout(1) stops the program after this
+// many seconds (exit 124, or 137 after the KILL), far above a refusal's cost
+// even under ASan, so a case that starts working instead of refusing fails.
+constexpr int kBoundSeconds = 120;
+
+test::RunResult run_bounded(const std::string& args) {
+  return test::run_shell("timeout -k 5 " + std::to_string(kBoundSeconds) + " \"" + RAILSIM_BINARY + "\" " + args +
+                         " 2>&1");
+}
+
 void check_exit_2(const std::vector<CliCase>& cases) {
   for (const auto& c : cases) {
-    const auto r = test::run_railsim(c.args);
+    const auto r = run_bounded(c.args);
     INFO(c.what << ": railsim " << c.args << "\n" << r.output);
+    CHECK(r.exit_code != 124);  // not stopped by the time bound
     CHECK(r.exit_code == 2);
     std::size_t at = 0;
     for (const auto& p : c.parts) {
@@ -71,6 +87,49 @@ TEST_CASE("railsim on bad scenario files: exit 2 naming file, line, key and rang
        {"scenario_initial_yaw_huge.yaml:10: key 'initial.ws1.yaw'", "[-0.1, 0.1] rad", "got 2"}},
       {"rtol 1e-15", "run " + bad("scenario_rtol_tiny.yaml") + out,
        {"scenario_rtol_tiny.yaml:10: key 'integrator.rtol'", "[1e-12, 0.1]", "got 1e-15"}},
+      // The rest of issue 19's examples, each through the program.
+      {"key twice in a flow map", "run " + bad("scenario_duplicate_nested_key.yaml") + out,
+       {"scenario_duplicate_nested_key.yaml:9: key 'contact.creep_coefficients.f11': given twice"}},
+      {"start -1e6", "run " + bad("scenario_start_distance_minus_1e6.yaml") + out,
+       {"scenario_start_distance_minus_1e6.yaml:10: key 'start_distance'", "[0, 400]", "got -1000000"}},
+      {"start 1e300", "run " + bad("scenario_start_distance_1e300.yaml") + out,
+       {"scenario_start_distance_1e300.yaml:10: key 'start_distance'", "[0, 400]", "got 1e+300"}},
+      {"output_interval 1e-9", "run " + bad("scenario_output_interval_tiny.yaml") + out,
+       {"scenario_output_interval_tiny.yaml:6: key 'output_interval'", "1000000000 output samples",
+        "more than the limit of 1000000"}},
+      {"nu 0", "run " + bad("scenario_nu_zero.yaml") + out,
+       {"scenario_nu_zero.yaml:10: key 'contact.material.nu'", "(0, 0.5]", "got 0"}},
+      {"mu 0", "run " + bad("scenario_mu_zero.yaml") + out,
+       {"scenario_mu_zero.yaml:10: key 'contact.material.mu'", "(0, 2]", "got 0"}},
+      {"table row with a = 0", "run " + bad("scenario_table_zero_a.yaml") + out,
+       {"table_zero_a.dat:5: column 4 (a [m])", "(0, 0.1]", "got 0"}},
+      {"table row with a negative normal force", "run " + bad("scenario_table_negative_n0.yaml") + out,
+       {"table_negative_n0.dat:5: column 2 (N0 [N])", "(0, 1e+07]", "got -60000"}},
+      {"deep nesting", "run " + bad("deep_nesting.yaml") + out, {"deep_nesting.yaml:2: YAML nested too deeply"}},
+  });
+  // The vehicle and track files of a scenario, swapped in with --set: the error is in that file.
+  const std::string sc = "run '" + test::source_path("scenarios/single_wheelset.yaml") + "'" + out;
+  check_exit_2({
+      {"two elements of one name", sc + " --set vehicle=" + bad("vehicle_duplicate_element.yaml"),
+       {"vehicle_duplicate_element.yaml:8: key 'elements[1].name'", "duplicate element name 'primary_L'"}},
+      {"a spring and a damper of one name", sc + " --set vehicle=" + bad("vehicle_duplicate_element_kinds.yaml"),
+       {"vehicle_duplicate_element_kinds.yaml:8: key 'elements[1].name'", "duplicate element name"}},
+      {"mass 1e300 kg", sc + " --set vehicle=" + bad("vehicle_mass_huge.yaml"),
+       {"vehicle_mass_huge.yaml:4: key 'bodies[0].mass'", "[1, 1000000]", "got 1e+300"}},
+      {"mass 1e-6 kg", sc + " --set vehicle=" + bad("vehicle_mass_tiny.yaml"),
+       {"vehicle_mass_tiny.yaml:4: key 'bodies[0].mass'", "[1, 1000000]", "got 1e-06"}},
+      {"inertias against the triangle inequality", sc + " --set vehicle=" + bad("vehicle_inertia_triangle.yaml"),
+       {"vehicle_inertia_triangle.yaml:4: key 'bodies[0].inertia'", "triangle inequality"}},
+      {"a vehicle key twice", sc + " --set vehicle=" + bad("vehicle_duplicate_key.yaml"),
+       {"vehicle_duplicate_key.yaml:4: key 'bodies[0].mass': given twice (first on line 4)"}},
+      {"a track key twice", sc + " --set track=" + bad("track_duplicate_key.yaml"),
+       {"track_duplicate_key.yaml:5: key 'segments': given twice (first on line 3)"}},
+      // A wheel profile in mm under a metres header, in a profile-geometry scenario.
+      {"profile in mm declared as metres",
+       "run '" + test::source_path("scenarios/manchester_coach_curve_R300.yaml") + "'" + out +
+           " --set contact.geometry.wheel=" + bad("profile_mm_declared_m.csv"),
+       {"profile_mm_declared_m.csv: lateral extent 140000 mm, more than the plausible 500 mm", "length unit m",
+        "line 1"}},
   });
   // A legal setting the integrator cannot work with: exit 3 naming the setting, its value and what to change.
   const auto r = test::run_railsim("run " + bad("scenario_max_steps_one.yaml") + out);
@@ -135,6 +194,34 @@ TEST_CASE("railsim on bad options: exit 2 naming the option and the range", "[cl
                               "' --model mim --grid -5 --out '" + dir + "/g.csv'",
        {"--grid: Value -5 not in range 0 to 4000"}},
       {"-o ''", "track '" + test::source_path("tracks/curve_R300.yaml") + "' -o ''", {"expected a file or folder name"}},
+      {"--v-step 1e-9 modes", "modes " + sc + " --v-step 1e-9 --out '" + dir + "/m'",
+       {"--v-step 1e-09: 20..400 km/h would take 380000000001 speeds, more than the limit of 2000"}},
+      {"--v-min -10 modes", "modes " + sc + " --v-min -10 --out '" + dir + "/m'",
+       {"--v-min/--v-max: need 0 < v-min < v-max <= 720 km/h (got -10, 400)"}},
+      {"--threads 1000", "critical-speed " + sc + " --threads 1000 --out '" + dir + "/c'",
+       {"--threads: Value 1000 not in range 0 to 256"}},
+      {"--reduction 5", "critical-speed " + sc + " --reduction 5 --out '" + dir + "/c'",
+       {"--reduction: k11 expected a number in (0, 1.5] (got 5)"}},
+      {"--contact-audit 1e8", "run " + sc + " --contact-audit 100000000 --out '" + dir + "/r'",
+       {"--contact-audit 100000000: the number of contact states must lie in [1, 10000]"}},
+      {"--from -1e300 on track", "track '" + test::source_path("tracks/curve_R300.yaml") + "' --from -1e300 -o '" +
+                                     dir + "/t.csv'",
+       {"--from: expected a distance in [0, 710] m", "got -1e+300"}},
+      {"--to 1e300 on track", "track '" + test::source_path("tracks/curve_R300.yaml") + "' --to 1e300 -o '" + dir +
+                                  "/t.csv'",
+       {"--to: expected a distance in [0, 710] m", "got 1e+300"}},
+      {"--step 1e-9 on track", "track '" + test::source_path("tracks/curve_R300.yaml") + "' --step 1e-9 -o '" + dir +
+                                   "/t.csv'",
+       {"--step 1e-09 gives 710000000001 rows (limit 2e7)"}},
+      // The geometry commands name the option of a refused track set-up or grid.
+      {"--gauge -1", "geometry --gauge -1 --no-cache --out '" + dir + "/g.csv'", {"--gauge: ", "[0.5, 2.5] m (got -1)"}},
+      {"--radius 0", "conicity --radius 0 --no-cache", {"--radius: ", "[0.1, 1.5] m (got 0)"}},
+      {"--flange-back 1.5", "conicity --flange-back 1.5 --no-cache", {"--flange-back/--gauge: ", "smaller than"}},
+      {"--y-step 1e-12", "geometry --y-step 1e-12 --no-cache --out '" + dir + "/g.csv'",
+       {"--y-step: ", "y step 1e-12 m: expected a value in [1e-6, y_max - y_min] m"}},
+      {"--y-max 1", "conicity --y-max 1 --no-cache", {"--y-min/--y-max: ", "-0.05 <= y_min < y_max <= 0.05 m"}},
+      {"a table with a = 0 on conicity", "conicity --table " + bad("table_zero_a.dat"),
+       {"table_zero_a.dat:5: column 4 (a [m])", "(0, 0.1]"}},
   });
 }
 
@@ -152,4 +239,73 @@ TEST_CASE("a second railsim writing the same output folder exits 2 naming the fo
   const auto r = test::run_railsim("modes " + sc + " --v-min 20 --v-max 30 --out '" + dir + "'");
   INFO(r.output);
   CHECK(r.exit_code == 0);
+}
+
+TEST_CASE("railsim on 50 MB of junk: exit 2, the message quotes at most a line of it", "[cli][bad_input]") {
+  // Random bytes, and random YAML punctuation and words (a syntax error a few lines in), 50 MB each
+  // (below the 64 MiB input limit, so read and parsed, not refused from the size).
+  const std::string dir = test::temp_dir("bad_input_junk");
+  std::mt19937 rng(19);
+  const std::string alphabet = "abc:{}[]- ,\n\"";
+  for (const std::string kind : {"bytes", "yaml"}) {
+    const std::string path = dir + "/junk_" + kind + ".yaml";
+    {
+      std::ofstream f(path, std::ios::binary);
+      std::string chunk(1 << 20, ' ');
+      for (int mb = 0; mb < 50; ++mb) {
+        for (char& ch : chunk)
+          ch = kind == "bytes" ? static_cast<char>(rng() & 0xffu) : alphabet[rng() % alphabet.size()];
+        f.write(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+      }
+    }
+    const std::string q = "'" + path + "'";
+    check_exit_2({
+        {kind + " as a scenario", "run " + q + " --out '" + dir + "/r'", {path + ":", "YAML syntax error"}},
+        {kind + " as a track", "track " + q + " -o '" + dir + "/t.csv'", {path + ":", "YAML syntax error"}},
+        {kind + " as contact cases", "contact " + q + " --model linear --out '" + dir + "/c.csv'",
+         {path + ":", "YAML syntax error"}},
+    });
+  }
+}
+
+TEST_CASE("two railsim processes on one output folder: the second exits 2 naming the first, whose result is whole",
+          "[cli][bad_input]") {
+  const std::string dir = test::temp_dir("bad_input_two");
+  // Two critical-speed sweeps of different steps (the finer one used to fail with exit 3, "point ... has no
+  // result", when the other deleted the shared partial file).
+  const std::string sc = "critical-speed '" + test::data_path("scenarios/single_wheelset_flange.yaml") + "'";
+  const std::string coarse = " --v-min 150 --v-max 180 --v-step 10 --duration 4 --threads 1 --no-continuation";
+  const std::string fine = " --v-min 150 --v-max 190 --v-step 5 --duration 4 --threads 1 --no-continuation";
+  const auto ref = test::run_railsim(sc + coarse + " --out '" + dir + "/ref'");
+  REQUIRE(ref.exit_code == 0);
+  const std::string shared = dir + "/shared";
+  const auto first = test::start_railsim(sc + coarse + " --out '" + shared + "'", dir + "/first");
+  REQUIRE(first.pid > 0);
+  // The second starts while the first is sweeping (its finished points on disk).
+  REQUIRE(test::wait_until([&] { return !test::read_text(shared + "/bifurcation.csv.part0").empty(); }, 60.0));
+  const std::string holder = shared + ": another railsim process (pid " + std::to_string(first.pid) + ") is writing";
+  check_exit_2({{"a finer sweep beside it", sc + fine + " --out '" + shared + "'", {holder}}});
+  REQUIRE(first.wait(kBoundSeconds) == 0);
+  INFO(first.output());
+  CHECK(test::read_text(shared + "/bifurcation.csv") == test::read_text(dir + "/ref/bifurcation.csv"));
+  // Afterwards the finer sweep has the folder: all of its 9 speeds, both branches.
+  const auto after = test::run_railsim(sc + fine + " --out '" + shared + "'");
+  INFO(after.output);
+  CHECK(after.exit_code == 0);
+  const std::string fine_csv = test::read_text(shared + "/bifurcation.csv");
+  CHECK(std::count(fine_csv.begin(), fine_csv.end(), '\n') == 1 + 2 * 9);
+
+  // Two runs: the second is refused while the first writes its channels (they used to collide on one
+  // temporary file name), and the first's channels are those of a run alone.
+  const std::string run = "run '" + test::source_path("scenarios/manchester_coach_curve_R300.yaml") + "'";
+  const auto alone = test::run_railsim(run + " --out '" + dir + "/alone'");
+  REQUIRE(alone.exit_code == 0);
+  const std::string out = dir + "/run";
+  const auto a = test::start_railsim(run + " --out '" + out + "'", dir + "/run_a");
+  REQUIRE(a.pid > 0);
+  REQUIRE(test::wait_until([&] { return !test::read_text(out + "/channels.csv").empty(); }, 60.0));
+  check_exit_2({{"a second run", run + " --out '" + out + "'",
+                 {out + ": another railsim process (pid " + std::to_string(a.pid) + ") is writing"}}});
+  REQUIRE(a.wait(kBoundSeconds) == 0);
+  CHECK(test::read_text(out + "/channels.csv") == test::read_text(dir + "/alone/channels.csv"));
 }

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "processes.hpp"
 #include "test_support.hpp"
 
 using namespace railsim;
@@ -42,18 +43,6 @@ std::string folder_with_full(const std::string& tag, const std::string& name) {
 
 std::string q(const std::string& s) { return "'" + s + "'"; }
 
-// Run a shell command line (which starts the program itself); its output and exit code.
-test::RunResult run_shell(const std::string& cmd) {
-  test::RunResult r;
-  if (FILE* p = popen(cmd.c_str(), "r")) {
-    char buf[4096];
-    for (std::size_t n; (n = fread(buf, 1, sizeof buf, p)) > 0;) r.output.append(buf, n);
-    const int status = pclose(p);
-    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  }
-  return r;
-}
-
 const std::string kBinary = std::string("'") + RAILSIM_BINARY + "'";
 
 const std::string kWheelset = test::source_path("scenarios/single_wheelset.yaml");
@@ -74,7 +63,7 @@ TEST_CASE("railsim writing a file to a full disk: exit 2 naming the file", "[cli
   };
   for (const auto& c : cases) check_failed_write(c, test::run_railsim(c.args));
   // Printed results: standard output on a full disk.
-  const auto r = run_shell(kBinary + " conicity --wheel S1002 --rail UIC60 --inclination 1/40 2>&1 >/dev/full");
+  const auto r = test::run_shell(kBinary + " conicity --wheel S1002 --rail UIC60 --inclination 1/40 2>&1 >/dev/full");
   INFO(r.output);
   CHECK(r.exit_code == 2);
   CHECK(r.output.find("standard output: write failed (No space left on device)") != std::string::npos);
@@ -116,7 +105,7 @@ TEST_CASE("railsim run under a file-size limit (as a disk filling up): exit 2 na
           "[cli][bad_input][write]") {
   // ulimit -f: writes beyond a few kB fail with EFBIG (the signal ignored: a full disk sends none).
   const std::string dir = test::temp_dir("full_limit");
-  const auto lim = run_shell("sh -c \"trap '' XFSZ; ulimit -f 4; exec " + kBinary + " run " + q(kWheelset) +
+  const auto lim = test::run_shell("sh -c \"trap '' XFSZ; ulimit -f 4; exec " + kBinary + " run " + q(kWheelset) +
                              " --out " + q(dir + "/limited") + "\" 2>&1");
   INFO(lim.output);
   CHECK(lim.exit_code == 2);

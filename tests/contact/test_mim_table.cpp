@@ -215,6 +215,12 @@ TEST_CASE("MIM table cache - a corrupt cached file is rebuilt and an interrupted
   for (std::size_t j = 0; j < spec.uxi.size(); ++j)
     for (std::size_t l = 0; l < spec.vpsi.size(); ++l)
       CHECK(t->node(0, j, 1, l)[1] == Approx(fresh->node(0, j, 1, l)[1]).margin(1e-9));
+  // The resumed table's file is byte-identical to that of a build never interrupted.
+  t->save(dir + "/resumed.table");
+  fresh->save(dir + "/fresh.table");
+  const std::string fresh_bytes = railsim::test::read_text(dir + "/fresh.table");
+  CHECK(fresh_bytes.size() > 8 + spec.size() * 3 * sizeof(double));
+  CHECK(railsim::test::read_text(dir + "/resumed.table") == fresh_bytes);
 
   // Cache: first call builds, second loads, a corrupted file is rebuilt.
   const auto a = load_or_build_mim_table(spec, dir, logger);

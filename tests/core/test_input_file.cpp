@@ -40,4 +40,7 @@ TEST_CASE("quote_input keeps one line of at most 80 characters", "[core][input]"
   CHECK(quote_input("first\nsecond") == "first...");
   CHECK(quote_input(std::string(81, 'a')) == std::string(80, 'a') + "...");
   CHECK(quote_input(std::string(80, 'a')) == std::string(80, 'a'));
+  // Control bytes of junk input are shown, not sent to the terminal; other bytes (UTF-8 names) kept.
+  CHECK(quote_input(std::string("a\x1b[2Jb\tc") + '\0' + "d") == "a\\x1b[2Jb\\x09c\\x00d");
+  CHECK(quote_input("Z\xc3\xbcrich") == "Z\xc3\xbcrich");
 }
