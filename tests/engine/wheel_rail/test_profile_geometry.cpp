@@ -250,7 +250,7 @@ TEST_CASE("profile geometry: both wheelset models load the flange root continuou
 // (tests/data/reference/contact/mbench_S1002_UIC60_sweep.csv, series yaw0,
 // y_ws = 0 .. 10 mm; CONTACT's roll is negative for a shift toward its
 // wheel: the opposite sign convention). Same tolerance as the geometry's own
-// test (tests/contact_geometry): 5 %, or 1e-5 rad near zero. The knife-edge
+// test (tests/contact/geometry): 5 %, or 1e-5 rad near zero. The knife-edge
 // formula (r_L - r_R)/(a_L + a_R) is 3-8 times larger there.
 TEST_CASE("profile geometry: the lateral model's kinematic roll is the rigid wheelset roll", "[engine][geometry]") {
   const Scenario sc = profiles_wheelset("wheelset_model: lateral\nwheelset_roll: kinematic\n", true);

@@ -11,7 +11,7 @@
 #include "contact/geometry/wheel_rail_geometry.hpp"
 #include "contact/mim/mim_model.hpp"
 #include "contact/mim/profile_gap.hpp"
-#include "contact_geometry/mbench_reference.hpp"
+#include "contact/geometry/mbench_reference.hpp"
 #include "core/errors.hpp"
 
 using namespace railsim;
