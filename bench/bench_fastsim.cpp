@@ -7,7 +7,7 @@
 
 #include "contact/fastrip.hpp"
 #include "contact/fastsim.hpp"
-#include "contact/mim_table.hpp"
+#include "contact/mim_table/mim_table.hpp"
 
 using namespace railsim::contact;
 

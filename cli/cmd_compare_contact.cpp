@@ -33,7 +33,7 @@
 #include "cli/commands.hpp"
 #include "cli/support_option_checks.hpp"
 #include "cli/support_contact_cases.hpp"
-#include "contact/mim_table.hpp"
+#include "contact/mim_table/mim_table.hpp"
 #include "contact/reduction.hpp"
 #include "contact/registry.hpp"
 #include "core/errors.hpp"

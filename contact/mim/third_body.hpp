@@ -12,7 +12,7 @@
 // those without it. third_body_reduction_cached() does the same for a
 // vehicle's contact patch and keeps the result in a cache file (one small
 // text file per patch, material, layer and grid under the railsim cache
-// folder, contact/mim_table.hpp), and adds the friction limit of the layer's
+// folder, contact/mim_table/mim_table.hpp), and adds the friction limit of the layer's
 // limiting stress: with tau_c the saturated tangential force of a Hertzian
 // patch is F = 2 pi a b int_0^1 min(mu p0 s, tau_c) s ds (p = p0 s,
 // s = sqrt(1 - r^2)), i.e. mu_limit = F / Fz <= mu. Units SI; h in m, G3 and

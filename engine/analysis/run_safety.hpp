@@ -54,7 +54,7 @@
 #include <vector>
 
 #include "engine/analysis/run_history.hpp"
-#include "engine/analysis/running_safety.hpp"
+#include "engine/analysis/safety_limits.hpp"
 #include "engine/analysis/safety_quantity.hpp"
 #include "engine/analysis/safety_settings.hpp"
 #include "engine/analysis/track_zones.hpp"

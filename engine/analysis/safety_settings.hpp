@@ -26,7 +26,7 @@
 #include <vector>
 
 #include "config/yaml_input.hpp"
-#include "engine/analysis/running_safety.hpp"
+#include "engine/analysis/safety_limits.hpp"
 #include "engine/analysis/track_zones.hpp"
 
 namespace railsim::engine {

@@ -219,7 +219,7 @@ results::Json safety_json(const engine::RunSafety& rs, const engine::FlangeAngle
   results::Json j = results::Json::object();
   j.set("pass", rs.pass);
   j.set("standard", "EN 14363:2016 / UIC 518 on-track assessment quantities, as in the public summaries named in "
-                    "engine/analysis/run_safety.hpp and running_safety.hpp; pass = Nadal and every quantity "
+                    "engine/analysis/run_safety.hpp and safety_limits.hpp; pass = Nadal and every quantity "
                     "with a limit within it in every track section");
   j.set("flange_angle_deg", rs.flange_angle * kDeg);
   j.set("flange_angle_source", fa.source);

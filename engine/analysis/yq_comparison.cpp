@@ -8,7 +8,7 @@
 #include "core/errors.hpp"
 #include "engine/analysis/run_history.hpp"
 #include "engine/analysis/run_safety.hpp"
-#include "engine/analysis/running_safety.hpp"
+#include "engine/analysis/safety_limits.hpp"
 #include "results/csv_writer.hpp"
 
 namespace railsim::engine {

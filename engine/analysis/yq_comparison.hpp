@@ -7,7 +7,7 @@
 // (the leading wheelset is the one furthest ahead, or the one named), the
 // flange angle of its contact geometry (run_safety.hpp flange_angle) and the
 // friction coefficient of its creep forces, hence Nadal's limit
-// (running_safety.hpp), the same the run's own running_safety evaluation uses.
+// (safety_limits.hpp), the same the run's own running_safety evaluation uses.
 // Per run and wheel: the largest |Y/Q|, the track distance and time where it
 // occurs, whether |Y/Q| exceeds the limit, over how many metres and seconds
 // (crossings interpolated linearly between samples), first and last place.

@@ -147,7 +147,7 @@ TEST_CASE("railsim contact bad inputs give file:line:key messages and exit 2", "
 // (a coarse MIM grid 8 keeps the build to a few seconds), then reused; its
 // forces agree with the live solver at the same grid within 2 % of mu Fz (the
 // table's interpolation error between nodes, tested to 2 % in
-// tests/contact/test_mim_table.cpp, plus the different alignment of a
+// tests/contact/mim_table/test_mim_table.cpp, plus the different alignment of a
 // coarse grid on the table's reference patch and on the real one; measured
 // 1.6 % on scenarios/contact_cases.yaml).
 TEST_CASE("railsim contact --model mim_table builds its table once and matches mim", "[cli][contact]") {

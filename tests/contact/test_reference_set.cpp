@@ -13,7 +13,7 @@
 
 #include "contact/mim/mim_model.hpp"
 #include "contact/registry.hpp"
-#include "contact/mim_table.hpp"
+#include "contact/mim_table/mim_table.hpp"
 #include "reference_set.hpp"
 
 using namespace railsim::contact;

@@ -10,7 +10,7 @@
 #include "contact/geometry/contact_table.hpp"
 #include "contact/geometry/profile.hpp"
 #include "contact/geometry/wheel_rail_geometry.hpp"
-#include "contact/mim_table.hpp"
+#include "contact/mim_table/mim_table.hpp"
 #include "core/cache_dir.hpp"
 #include "core/errors.hpp"
 #include "test_support.hpp"

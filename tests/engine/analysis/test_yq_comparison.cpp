@@ -8,7 +8,7 @@
 #include <fstream>
 
 #include "core/errors.hpp"
-#include "engine/analysis/running_safety.hpp"
+#include "engine/analysis/safety_limits.hpp"
 #include "engine/analysis/yq_comparison.hpp"
 #include "test_support.hpp"
 

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "contact/mim_table.hpp"
-#include "contact/mim_table_bytes.hpp"
+#include "contact/mim_table/mim_table.hpp"
+#include "contact/mim_table/bytes.hpp"
 #include "core/content_hash.hpp"
 #include "core/errors.hpp"
 

@@ -1,5 +1,5 @@
-// Running-safety limit values; see running_safety.hpp for the sources.
-#include "engine/analysis/running_safety.hpp"
+// Running-safety limit values; see safety_limits.hpp for the sources.
+#include "engine/analysis/safety_limits.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 // Little-endian byte writer and bounds-checked reader of the MIM table's binary
-// file (mim_table_file.cpp) and of its parameter hash (mim_table_spec.cpp);
+// file (mim_table/file.cpp) and of its parameter hash (mim_table/spec.cpp);
 // the layout of the file is described in mim_table.hpp. Internal to contact/.
 #pragma once
 

@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <string>
 
-#include "contact/mim_table.hpp"
-#include "contact/mim_table_bytes.hpp"
+#include "contact/mim_table/mim_table.hpp"
+#include "contact/mim_table/bytes.hpp"
 #include "core/atomic_file.hpp"
 #include "core/content_hash.hpp"
 #include "core/errors.hpp"

@@ -39,12 +39,12 @@
 // build resumes from the valid records; the final file is written to a
 // temporary name and renamed, so it is never seen half-written.
 //
-// Files, one job each: mim_table_spec.cpp (standard table, checks, parameter
-// hash), mim_table_file.cpp (binary format), mim_table_lookup.cpp (Hermite
-// interpolation), mim_table_build.cpp (threaded resumable build),
-// mim_table_cache.cpp (cache folder and file, load-or-build under the file
-// lock of core/file_lock.hpp), mim_table_model.cpp (the model "mim_table");
-// internal: mim_table_bytes.hpp (byte writer/reader), mim_table_axes.hpp
+// Files, one job each: mim_table/spec.cpp (standard table, checks, parameter
+// hash), mim_table/file.cpp (binary format), mim_table/lookup.cpp (Hermite
+// interpolation), mim_table/build.cpp (threaded resumable build),
+// mim_table/cache.cpp (cache folder and file, load-or-build under the file
+// lock of core/file_lock.hpp), mim_table/model.cpp (the model "mim_table");
+// internal: mim_table/bytes.hpp (byte writer/reader), mim_table/axes.hpp
 // (axis maps).
 //
 // Units: SI; signs as contact/types.hpp.

@@ -16,8 +16,8 @@
 #include "contact/hertz.hpp"
 #include "contact/kalker_coefficients.hpp"
 #include "contact/mim/mim_model.hpp"
-#include "contact/mim_table.hpp"
-#include "contact/mim_table_axes.hpp"
+#include "contact/mim_table/mim_table.hpp"
+#include "contact/mim_table/axes.hpp"
 #include "core/atomic_file.hpp"
 #include "core/content_hash.hpp"
 

@@ -11,7 +11,7 @@
 #include <string>
 
 #include "contact/kalker_coefficients.hpp"
-#include "contact/mim_table.hpp"
+#include "contact/mim_table/mim_table.hpp"
 #include "contact/mim/mim_model.hpp"
 #include "contact/hertz.hpp"
 #include "core/errors.hpp"

@@ -11,7 +11,7 @@
 
 #include "contact/fastsim.hpp"  // check_tangential_input
 #include "contact/kalker_coefficients.hpp"
-#include "contact/mim_table.hpp"
+#include "contact/mim_table/mim_table.hpp"
 
 namespace railsim::contact {
 

@@ -1,11 +1,11 @@
-// Running-safety limit values (engine/analysis/running_safety.hpp) against the
+// Running-safety limit values (engine/analysis/safety_limits.hpp) against the
 // Nadal table, Prud'homme's worked example and the limit formulas' own numbers.
 #include <catch2/catch.hpp>
 
 #include <cmath>
 #include <limits>
 
-#include "engine/analysis/running_safety.hpp"
+#include "engine/analysis/safety_limits.hpp"
 #include "results/csv_writer.hpp"
 #include "test_support.hpp"
 

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <vector>
 
-#include "contact/mim_table.hpp"
-#include "contact/mim_table_axes.hpp"
+#include "contact/mim_table/mim_table.hpp"
+#include "contact/mim_table/axes.hpp"
 
 namespace railsim::contact {
 

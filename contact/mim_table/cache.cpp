@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <string>
 
-#include "contact/mim_table.hpp"
+#include "contact/mim_table/mim_table.hpp"
 #include "core/cache_dir.hpp"
 #include "core/errors.hpp"
 #include "core/file_lock.hpp"
