@@ -17,6 +17,7 @@
 #include <string>
 
 #include "engine/analysis/critical_speed.hpp"
+#include "engine/analysis/critical_speed_study.hpp"
 #include "engine/io/scenario.hpp"
 
 namespace {
@@ -32,15 +33,8 @@ double one_thread_wall[2] = {0.0, 0.0};
 void sweep(benchmark::State& state, bool continuation) {
   using namespace railsim::engine;
   const Scenario sc = load_scenario(scenario_path("manchester_coach_critical_speed.yaml"));
-  const auto& cs = sc.critical_speed;
-  BifurcationOptions o;
-  o.v_min = cs.v_min;
-  o.v_max = cs.v_max;
-  o.v_step = cs.v_step;
-  o.duration = cs.duration;
-  o.large_disturbance = cs.disturbance;
-  o.small_disturbance = cs.small_disturbance;
-  o.threshold = cs.threshold;
+  BifurcationOptions o = bifurcation_options(study_settings(sc.critical_speed));
+  o.use_mpi = false;
   o.continuation = continuation;
   o.threads = static_cast<int>(state.range(0));
   const auto dir = std::filesystem::temp_directory_path() / "railsim_bench_sweep";

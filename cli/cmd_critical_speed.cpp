@@ -76,27 +76,27 @@ struct CriticalSpeedArgs {
 // The settings in SI (the engine's units): command-line values (km/h, mm)
 // where given, else the scenario's critical_speed section (already SI).
 engine::CriticalSpeedStudySettings study_settings(const CriticalSpeedArgs& a, const engine::CriticalSpeedSettings& sc) {
-  auto pick = [](double cli, double unit, double scen) { return std::isnan(cli) ? scen : cli * unit; };
-  constexpr double mm = 1e-3;
-  engine::CriticalSpeedStudySettings s;
+  engine::CriticalSpeedStudySettings s = engine::study_settings(sc);
   s.method = engine::parse_critical_speed_method(a.method, "--method");
-  const bool range_given = !std::isnan(a.v_max_kmh);
-  s.v_min = std::isnan(a.v_min_kmh) ? sc.v_min : a.v_min_kmh / 3.6;
-  s.v_max = std::isnan(a.v_max_kmh) ? sc.v_max : a.v_max_kmh / 3.6;
-  s.v_step = std::isnan(a.v_step_kmh) ? sc.v_step : a.v_step_kmh / 3.6;
-  s.duration = pick(a.duration, 1.0, sc.duration);
-  const bool disturbance_given = !std::isnan(a.large);
-  s.large_disturbance = pick(a.large, mm, sc.disturbance);
-  s.small_disturbance = pick(a.small, mm, sc.small_disturbance);
-  s.threshold = pick(a.threshold, mm, sc.threshold);
-  s.deceleration = pick(a.deceleration, 1.0, sc.deceleration);
+  // Options not given are NaN; km/h and mm converted once, here.
+  auto kmh = [](double& to, double cli) { if (!std::isnan(cli)) to = cli / 3.6; };
+  auto mm = [](double& to, double cli) { if (!std::isnan(cli)) to = cli * 1e-3; };
+  auto si = [](double& to, double cli) { if (!std::isnan(cli)) to = cli; };
+  kmh(s.v_min, a.v_min_kmh);
+  kmh(s.v_max, a.v_max_kmh);
+  kmh(s.v_step, a.v_step_kmh);
+  si(s.duration, a.duration);
+  mm(s.large_disturbance, a.large);
+  mm(s.small_disturbance, a.small);
+  mm(s.threshold, a.threshold);
+  si(s.deceleration, a.deceleration);
   s.up_branch = a.up_branch;
-  s.continuation = a.continuation_on || (!a.continuation_off && sc.continuation);
-  s.ramp_start = range_given || sc.ramp_start <= 0 ? s.v_max : sc.ramp_start;
-  s.ramp_start_source = range_given ? "--v-max"
-                        : sc.ramp_start > 0 ? "the scenario's critical_speed.ramping.v_start_kmh"
-                                            : "v_max_kmh of the scenario's critical_speed section (or the default)";
-  s.ramp_disturbance = disturbance_given || sc.ramp_disturbance <= 0 ? s.large_disturbance : sc.ramp_disturbance;
+  if (a.continuation_on || a.continuation_off) s.continuation = a.continuation_on;
+  if (!std::isnan(a.v_max_kmh)) {  // --v-max is also the ramp's start
+    s.ramp_start = s.v_max;
+    s.ramp_start_source = "--v-max";
+  }
+  if (!std::isnan(a.large)) s.ramp_disturbance = s.large_disturbance;
   s.threads = a.threads;
   return s;
 }

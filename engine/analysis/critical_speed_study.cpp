@@ -50,6 +50,24 @@ const char* critical_speed_method_name(CriticalSpeedMethod m) {
   return m == CriticalSpeedMethod::ramping ? "ramping" : "bifurcation";
 }
 
+CriticalSpeedStudySettings study_settings(const CriticalSpeedSettings& sc) {
+  CriticalSpeedStudySettings s;
+  s.v_min = sc.v_min;
+  s.v_max = sc.v_max;
+  s.v_step = sc.v_step;
+  s.duration = sc.duration;
+  s.large_disturbance = sc.disturbance;
+  s.small_disturbance = sc.small_disturbance;
+  s.threshold = sc.threshold;
+  s.deceleration = sc.deceleration;
+  s.continuation = sc.continuation;
+  s.ramp_start = sc.ramp_start > 0 ? sc.ramp_start : sc.v_max;
+  s.ramp_start_source = sc.ramp_start > 0 ? "the scenario's critical_speed.ramping.v_start_kmh"
+                                          : "v_max_kmh of the scenario's critical_speed section (or the default)";
+  s.ramp_disturbance = sc.ramp_disturbance > 0 ? sc.ramp_disturbance : sc.disturbance;
+  return s;
+}
+
 BifurcationOptions bifurcation_options(const CriticalSpeedStudySettings& s) {
   BifurcationOptions o;
   o.v_min = s.v_min;

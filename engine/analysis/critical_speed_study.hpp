@@ -44,6 +44,12 @@ struct CriticalSpeedStudySettings {
   int threads = 0;                     // worker threads per process; 0 = all cores
 };
 
+// A scenario's critical_speed section (engine/io/scenario.hpp) as study
+// settings: what the command line leaves to the scenario. The ramp starts at
+// its ramping.v_start_kmh, else v_max, with its ramping.disturbance_mm, else
+// the large disturbance.
+CriticalSpeedStudySettings study_settings(const CriticalSpeedSettings& scenario_section);
+
 // The settings as the engine's sweep options (MPI on: ranks share the points).
 BifurcationOptions bifurcation_options(const CriticalSpeedStudySettings& s);
 RampingOptions ramping_options(const CriticalSpeedStudySettings& s);
