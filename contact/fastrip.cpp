@@ -99,7 +99,7 @@ ContactForces Fastrip::compute(const ContactInput& in, TangentialWorkspace* /*ws
 
   const auto nx = static_cast<std::size_t>(grid_.nx);
   const auto ny = static_cast<std::size_t>(grid_.ny);
-  double Fx = 0.0, Fy = 0.0, Mz = 0.0, area = 0.0, stick = 0.0;
+  StripSums sums;
   for (std::size_t j = 0; j < ny; ++j) {
     const double y = b * grid_.Y[j];
     const double aj = a * grid_.t[j];
@@ -186,14 +186,9 @@ ContactForces Fastrip::compute(const ContactInput& in, TangentialWorkspace* /*ws
       mz += M * ey + x * sy * w;
       xprev = x;
     }
-    const double dy = b * grid_.dY[j];
-    Fx += fx * dy;
-    Fy += fy * dy;
-    Mz += (mz - y * fx) * dy;
-    area += 2.0 * aj * dy;
-    stick += adh * dy;
+    sums.add(fx, fy, mz, y, aj, adh, b * grid_.dY[j]);
   }
-  return strip_model_result("fastrip", in, Fx, Fy, Mz, stick, area);
+  return strip_model_result("fastrip", in, sums);
 }
 
 std::unique_ptr<TangentialModel> make_fastrip(const TangentialModelOptions& options) {

@@ -33,8 +33,8 @@ int StripGrid::size_option(const TangentialModelOptions& options, const char* mo
   return options.grid;
 }
 
-ContactForces strip_model_result(const char* model, const ContactInput& in, double Fx, double Fy, double Mz,
-                                 double stick_area, double area) {
+ContactForces strip_model_result(const char* model, const ContactInput& in, const StripSums& sums) {
+  const double Fx = sums.Fx, Fy = sums.Fy, Mz = sums.Mz, stick_area = sums.stick, area = sums.area;
   if (!std::isfinite(Fx) || !std::isfinite(Fy) || !std::isfinite(Mz))
     throw NumericalError(std::string(model) + ": non-finite creep force (a = " + std::to_string(in.patch.a) +
                          " m, b = " + std::to_string(in.patch.b) + " m, Fz = " + std::to_string(in.patch.Fz) +
@@ -172,7 +172,7 @@ ContactForces Fastsim::compute(const ContactInput& in, TangentialWorkspace* /*ws
 
   const auto nx = static_cast<std::size_t>(grid_.nx);
   const auto ny = static_cast<std::size_t>(grid_.ny);
-  double Fx = 0.0, Fy = 0.0, Mz = 0.0, area = 0.0, stick = 0.0;
+  StripSums sums;
   for (std::size_t j = 0; j < ny; ++j) {
     const double y = b * grid_.Y[j];
     const double aj = a * grid_.t[j];
@@ -201,14 +201,9 @@ ContactForces Fastsim::compute(const ContactInput& in, TangentialWorkspace* /*ws
       mz += x * py * w;
       xprev = x;
     }
-    const double dy = b * grid_.dY[j];
-    Fx += fx * dy;
-    Fy += fy * dy;
-    Mz += (mz - y * fx) * dy;
-    area += 2.0 * aj * dy;
-    stick += adh * dy;
+    sums.add(fx, fy, mz, y, aj, adh, b * grid_.dY[j]);
   }
-  return strip_model_result(name_, in, Fx, Fy, Mz, stick, area);
+  return strip_model_result(name_, in, sums);
 }
 
 std::unique_ptr<TangentialModel> make_fastsim(const TangentialModelOptions& options) {

@@ -99,11 +99,25 @@ struct StripGrid {
   static int size_option(const TangentialModelOptions& options, const char* model, int fallback);
 };
 
+// Sums of a strip model over its strips: a strip at lateral position y of
+// half-length x_half and width dy, with per-unit-width force (fx, fy), moment
+// about its own centre line mz and adhesion length adh, adds its forces, its
+// moment about the patch centre (mz - y fx), its area and its stick area.
+struct StripSums {
+  double Fx = 0.0, Fy = 0.0, Mz = 0.0, area = 0.0, stick = 0.0;
+  void add(double fx, double fy, double mz, double y, double x_half, double adh, double dy) {
+    Fx += fx * dy;
+    Fy += fy * dy;
+    Mz += (mz - y * fx) * dy;
+    area += 2.0 * x_half * dy;
+    stick += adh * dy;
+  }
+};
+
 // Result of a strip model from its sums over the strips (forces, moment, stick
 // and total area); NumericalError naming the model and the patch when a force
 // is not finite.
-ContactForces strip_model_result(const char* model, const ContactInput& in, double Fx, double Fy, double Mz,
-                                 double stick_area, double area);
+ContactForces strip_model_result(const char* model, const ContactInput& in, const StripSums& sums);
 
 struct FastsimOptions {
   int nx = 20;  // elements per strip (rolling direction)

@@ -86,14 +86,9 @@ std::string ContactTable::default_cache_dir() { return resolve_cache_dir(); }
 
 unsigned long long ContactTable::cache_key(const WheelRailGeometry& geometry, const Profile& wheel,
                                            const Profile& rail, const TableGrid& grid) {
-  ContentHash f;
-  f.bytes(kMagic, sizeof kMagic);
-  f.value(wheel.content_hash());
-  f.value(rail.content_hash());
-  const TrackSetup& s = geometry.setup();
+  ContentHash f = geometry_cache_hash(kMagic, sizeof kMagic, wheel, rail, geometry);
   const SearchOptions& o = geometry.options();
-  for (double v : {s.gauge, s.gauge_depth, s.flange_back, s.back_face, s.r0, s.inclination, grid.y_min, grid.y_max,
-                   grid.y_step, o.second_gap_max, o.wheel_step, o.rail_step, o.flange_margin})
+  for (double v : {grid.y_min, grid.y_max, grid.y_step, o.second_gap_max, o.wheel_step, o.rail_step, o.flange_margin})
     f.value(v);
   return f.value();
 }

@@ -439,14 +439,10 @@ StripContactTable StripContactTable::cached(const WheelRailGeometry& geometry, c
   grid.validate();
   if (loaded_from_cache) *loaded_from_cache = false;
   const std::string dir = resolve_cache_dir(cache_dir);
-  ContentHash f;
-  f.bytes(kMagic, sizeof kMagic);
-  f.value(wheel.content_hash());
-  f.value(rail.content_hash());
-  const TrackSetup& s = geometry.setup();
+  ContentHash f = geometry_cache_hash(kMagic, sizeof kMagic, wheel, rail, geometry);
   const SearchOptions& o = geometry.options();
-  for (double v : {s.gauge, s.gauge_depth, s.flange_back, s.back_face, s.r0, s.inclination, grid.y_min, grid.y_max,
-                   grid.y_step, grid.yaw_max, grid.yaw_step, grid.strip, grid.gap_store, o.wheel_step, o.rail_step})
+  for (double v : {grid.y_min, grid.y_max, grid.y_step, grid.yaw_max, grid.yaw_step, grid.strip, grid.gap_store,
+                   o.wheel_step, o.rail_step})
     f.value(v);
   const unsigned long long key = f.value();
   char name[64];

@@ -450,4 +450,15 @@ GapProfile WheelRailGeometry::gap_profile(Side side, const ContactPoint& p, doub
   return gp;
 }
 
+ContentHash geometry_cache_hash(const void* magic, std::size_t magic_size, const Profile& wheel, const Profile& rail,
+                                const WheelRailGeometry& geometry) {
+  ContentHash f;
+  f.bytes(magic, magic_size);
+  f.value(wheel.content_hash());
+  f.value(rail.content_hash());
+  const TrackSetup& s = geometry.setup();
+  for (double v : {s.gauge, s.gauge_depth, s.flange_back, s.back_face, s.r0, s.inclination}) f.value(v);
+  return f;
+}
+
 }  // namespace railsim::contact

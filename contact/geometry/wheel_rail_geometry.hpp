@@ -38,6 +38,7 @@
 #include <vector>
 
 #include "contact/geometry/profile.hpp"
+#include "core/content_hash.hpp"
 
 namespace railsim::contact {
 
@@ -183,5 +184,12 @@ class WheelRailGeometry {
   double u0_ = 0.0, du_ = 0.0;
   std::vector<double> rail_z_, rail_tgrid_;
 };
+
+// The common start of a geometry table's cache key (contact_table.hpp,
+// strip_contact_table.hpp): the table's format magic, both profiles' content
+// hashes and the track set-up (gauge, gauge depth, flange back, back face,
+// r0, inclination), in that order; each table adds its grid and options.
+ContentHash geometry_cache_hash(const void* magic, std::size_t magic_size, const Profile& wheel, const Profile& rail,
+                                const WheelRailGeometry& geometry);
 
 }  // namespace railsim::contact
