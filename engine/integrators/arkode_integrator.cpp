@@ -9,15 +9,14 @@
 #include <string>
 
 #include "core/errors.hpp"
-#include "engine/integrators/integrator.hpp"
 #include "engine/integrators/sundials_support.hpp"
 
 namespace railsim::engine {
 namespace {
 
-class ArkodeErk final : public Integrator {
+class ArkodeErk final : public SundialsIntegrator {
  public:
-  ArkodeErk(OdeSystem& sys, const IntegratorOptions& o) : c_(sys, o) {}
+  ArkodeErk(OdeSystem& sys, const IntegratorOptions& o) : SundialsIntegrator(sys, o) {}
   ~ArkodeErk() override {
     if (mem_) ERKStepFree(&mem_);
   }
@@ -64,16 +63,11 @@ class ArkodeErk final : public Integrator {
   }
   std::string name() const override { return "arkode_erk (Dormand-Prince 5(4))"; }
   bool is_explicit() const override { return true; }
-
- private:
-  SundialsCommon c_;
-  void* mem_ = nullptr;
-  double t_ = 0.0;
 };
 
-class ArkodeDirk final : public Integrator {
+class ArkodeDirk final : public SundialsIntegrator {
  public:
-  ArkodeDirk(OdeSystem& sys, const IntegratorOptions& o) : c_(sys, o) {}
+  ArkodeDirk(OdeSystem& sys, const IntegratorOptions& o) : SundialsIntegrator(sys, o) {}
   ~ArkodeDirk() override {
     if (mem_) ARKStepFree(&mem_);
   }
@@ -128,11 +122,6 @@ class ArkodeDirk final : public Integrator {
   }
   std::string name() const override { return "arkode_dirk (SDIRK, " + c_.opt.linear_solver + ")"; }
   bool is_explicit() const override { return false; }
-
- private:
-  SundialsCommon c_;
-  void* mem_ = nullptr;
-  double t_ = 0.0;
 };
 
 }  // namespace

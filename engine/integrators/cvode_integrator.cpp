@@ -9,15 +9,14 @@
 #include <string>
 
 #include "core/errors.hpp"
-#include "engine/integrators/integrator.hpp"
 #include "engine/integrators/sundials_support.hpp"
 
 namespace railsim::engine {
 namespace {
 
-class CvodeIntegrator final : public Integrator {
+class CvodeIntegrator final : public SundialsIntegrator {
  public:
-  CvodeIntegrator(OdeSystem& sys, const IntegratorOptions& o) : c_(sys, o) {}
+  CvodeIntegrator(OdeSystem& sys, const IntegratorOptions& o) : SundialsIntegrator(sys, o) {}
   ~CvodeIntegrator() override {
     if (mem_) CVodeFree(&mem_);
   }
@@ -77,11 +76,6 @@ class CvodeIntegrator final : public Integrator {
     return "cvode_bdf (" + c_.opt.linear_solver + ", " + c_.opt.jacobian + " Jacobian)";
   }
   bool is_explicit() const override { return false; }
-
- private:
-  SundialsCommon c_;
-  void* mem_ = nullptr;
-  double t_ = 0.0;
 };
 
 }  // namespace

@@ -64,4 +64,15 @@ struct SundialsCommon {
   static void check_created(const void* mem, const char* call);
 };
 
+// What every SUNDIALS integrator holds: the shared set-up above, the
+// package's memory block (freed by the derived class's destructor, before
+// the set-up it uses) and the time reached.
+class SundialsIntegrator : public Integrator {
+ protected:
+  SundialsIntegrator(OdeSystem& sys, const IntegratorOptions& o) : c_(sys, o) {}
+  SundialsCommon c_;
+  void* mem_ = nullptr;
+  double t_ = 0.0;
+};
+
 }  // namespace railsim::engine
