@@ -98,11 +98,7 @@ ContactForces Fastrip::compute(const ContactInput& in, TangentialWorkspace* /*ws
   const double spx = in.creep.phi / L3;   // longitudinal spin slip / L3 per metre of y
 
   const auto nx = static_cast<std::size_t>(grid_.nx);
-  const auto ny = static_cast<std::size_t>(grid_.ny);
-  StripSums sums;
-  for (std::size_t j = 0; j < ny; ++j) {
-    const double y = b * grid_.Y[j];
-    const double aj = a * grid_.t[j];
+  const StripSums sums = grid_.sum_strips(a, b, [&](std::size_t j, double y, double aj) {
     const double gj = mu * p0 * grid_.t[j];  // mu p0_j: peak of the strip's bound
     // Carter solution of the strip (step 2): adhesion centre d, half-length ar.
     double d = 0.0, ar = aj;
@@ -186,8 +182,8 @@ ContactForces Fastrip::compute(const ContactInput& in, TangentialWorkspace* /*ws
       mz += M * ey + x * sy * w;
       xprev = x;
     }
-    sums.add(fx, fy, mz, y, aj, adh, b * grid_.dY[j]);
-  }
+    return StripForces{fx, fy, mz, adh};
+  });
   return strip_model_result("fastrip", in, sums);
 }
 

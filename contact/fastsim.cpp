@@ -171,11 +171,7 @@ ContactForces Fastsim::compute(const ContactInput& in, TangentialWorkspace* /*ws
   const double sp = in.creep.phi / L3;   // from spin, per metre of lever arm [Pa/m^2]
 
   const auto nx = static_cast<std::size_t>(grid_.nx);
-  const auto ny = static_cast<std::size_t>(grid_.ny);
-  StripSums sums;
-  for (std::size_t j = 0; j < ny; ++j) {
-    const double y = b * grid_.Y[j];
-    const double aj = a * grid_.t[j];
+  const StripSums sums = grid_.sum_strips(a, b, [&](std::size_t j, double y, double aj) {
     const double gx = sx - sp * y;  // longitudinal rigid slip / L, uniform on the strip
     const double* bnd = &bound_shape_[j * nx];
     double px = 0.0, py = 0.0, xprev = aj;
@@ -201,8 +197,8 @@ ContactForces Fastsim::compute(const ContactInput& in, TangentialWorkspace* /*ws
       mz += x * py * w;
       xprev = x;
     }
-    sums.add(fx, fy, mz, y, aj, adh, b * grid_.dY[j]);
-  }
+    return StripForces{fx, fy, mz, adh};
+  });
   return strip_model_result(name_, in, sums);
 }
 

@@ -80,6 +80,27 @@ enum class TractionBound { elliptic, parabolic };
 enum class FastsimFlexibility { three, blended };
 enum class GridSpacing { uniform, cosine };
 
+// One strip's result in a strip model: force per unit width (fx, fy), moment
+// about the strip's own centre line per unit width mz, adhesion length adh.
+struct StripForces {
+  double fx = 0.0, fy = 0.0, mz = 0.0, adh = 0.0;
+};
+
+// Sums of a strip model over its strips: a strip at lateral position y of
+// half-length x_half and width dy, with per-unit-width force (fx, fy), moment
+// about its own centre line mz and adhesion length adh, adds its forces, its
+// moment about the patch centre (mz - y fx), its area and its stick area.
+struct StripSums {
+  double Fx = 0.0, Fy = 0.0, Mz = 0.0, area = 0.0, stick = 0.0;
+  void add(double fx, double fy, double mz, double y, double x_half, double adh, double dy) {
+    Fx += fx * dy;
+    Fy += fy * dy;
+    Mz += (mz - y * fx) * dy;
+    area += 2.0 * x_half * dy;
+    stick += adh * dy;
+  }
+};
+
 // Strip x element grid in coordinates normalised by the semi-axes
 // (X = x/a_j along a strip, Y = y/b across strips). Shared by FASTSIM and FaStrip.
 struct StripGrid {
@@ -97,22 +118,26 @@ struct StripGrid {
   // The registry's grid option for a strip model: N gives N x N elements, N in
   // [2, 1000] (InputError naming `model` otherwise); 0 keeps `fallback`.
   static int size_option(const TangentialModelOptions& options, const char* model, int fallback);
+
+  // The strip loop of a strip model on a patch of semi-axes (a, b): for each
+  // strip j at y_j = b Y_j with half-length a_j = a t_j, strip(j, y_j, a_j)
+  // returns its StripForces, and the sums over all strips (widths b dY_j) are
+  // returned. FASTSIM and FaStrip differ only in the body.
+  template <class StripBody>
+  StripSums sum_strips(double a, double b, StripBody&& strip) const;
 };
 
-// Sums of a strip model over its strips: a strip at lateral position y of
-// half-length x_half and width dy, with per-unit-width force (fx, fy), moment
-// about its own centre line mz and adhesion length adh, adds its forces, its
-// moment about the patch centre (mz - y fx), its area and its stick area.
-struct StripSums {
-  double Fx = 0.0, Fy = 0.0, Mz = 0.0, area = 0.0, stick = 0.0;
-  void add(double fx, double fy, double mz, double y, double x_half, double adh, double dy) {
-    Fx += fx * dy;
-    Fy += fy * dy;
-    Mz += (mz - y * fx) * dy;
-    area += 2.0 * x_half * dy;
-    stick += adh * dy;
+template <class StripBody>
+StripSums StripGrid::sum_strips(double a, double b, StripBody&& strip) const {
+  StripSums sums;
+  for (std::size_t j = 0; j < Y.size(); ++j) {
+    const double y = b * Y[j];
+    const double aj = a * t[j];
+    const StripForces f = strip(j, y, aj);
+    sums.add(f.fx, f.fy, f.mz, y, aj, f.adh, b * dY[j]);
   }
-};
+  return sums;
+}
 
 // Result of a strip model from its sums over the strips (forces, moment, stick
 // and total area); NumericalError naming the model and the patch when a force
