@@ -3,8 +3,10 @@
 
 namespace railsim::engine {
 
-void TrackInput::sample(double s, TrackSample& out) const {
-  const track::TrackState t = track_->at(s);
+namespace {
+// The alignment's part of a sample (curvature, cant angle, their rates along s,
+// heading, ground position).
+void copy_alignment(const track::AlignmentState& t, TrackSample& out) {
   out.curvature = t.curvature;
   out.curvature_rate = t.dcurvature;
   out.cant = t.cant_angle;
@@ -12,6 +14,12 @@ void TrackInput::sample(double s, TrackSample& out) const {
   out.heading = t.heading;
   out.x = t.x;
   out.y = t.y;
+}
+}  // namespace
+
+void TrackInput::sample(double s, TrackSample& out) const {
+  const track::TrackState t = track_->at(s);
+  copy_alignment(t, out);
   const auto& ir = t.irregularity;
   out.lat_left = ir.left_lateral();
   out.lat_right = ir.right_lateral();
@@ -26,13 +34,7 @@ void TrackInput::sample(double s, TrackSample& out) const {
 void TrackInput::sample_alignment(double s, TrackSample& out) const {
   const track::AlignmentState t = track_->alignment_at(s);
   out = TrackSample{};
-  out.curvature = t.curvature;
-  out.curvature_rate = t.dcurvature;
-  out.cant = t.cant_angle;
-  out.cant_rate = t.dcant_angle;
-  out.heading = t.heading;
-  out.x = t.x;
-  out.y = t.y;
+  copy_alignment(t, out);
 }
 
 std::string TrackInput::describe() const {
