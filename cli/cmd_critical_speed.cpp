@@ -78,25 +78,18 @@ struct CriticalSpeedArgs {
 engine::CriticalSpeedStudySettings study_settings(const CriticalSpeedArgs& a, const engine::CriticalSpeedSettings& sc) {
   engine::CriticalSpeedStudySettings s = engine::study_settings(sc);
   s.method = engine::parse_critical_speed_method(a.method, "--method");
-  // Options not given are NaN; km/h and mm converted once, here.
-  auto kmh = [](double& to, double cli) { if (!std::isnan(cli)) to = cli / 3.6; };
-  auto mm = [](double& to, double cli) { if (!std::isnan(cli)) to = cli * 1e-3; };
-  auto si = [](double& to, double cli) { if (!std::isnan(cli)) to = cli; };
-  kmh(s.v_min, a.v_min_kmh);
-  kmh(s.v_max, a.v_max_kmh);
-  kmh(s.v_step, a.v_step_kmh);
-  si(s.duration, a.duration);
-  mm(s.large_disturbance, a.large);
-  mm(s.small_disturbance, a.small);
-  mm(s.threshold, a.threshold);
-  si(s.deceleration, a.deceleration);
+  engine::CriticalSpeedOverrides given;  // options not given are NaN
+  given.v_min_kmh = a.v_min_kmh;
+  given.v_max_kmh = a.v_max_kmh;
+  given.v_step_kmh = a.v_step_kmh;
+  given.duration = a.duration;
+  given.large_disturbance_mm = a.large;
+  given.small_disturbance_mm = a.small;
+  given.threshold_mm = a.threshold;
+  given.deceleration = a.deceleration;
+  if (a.continuation_on || a.continuation_off) given.continuation = a.continuation_on;
+  engine::apply_overrides(s, given);
   s.up_branch = a.up_branch;
-  if (a.continuation_on || a.continuation_off) s.continuation = a.continuation_on;
-  if (!std::isnan(a.v_max_kmh)) {  // --v-max is also the ramp's start
-    s.ramp_start = s.v_max;
-    s.ramp_start_source = "--v-max";
-  }
-  if (!std::isnan(a.large)) s.ramp_disturbance = s.large_disturbance;
   s.threads = a.threads;
   return s;
 }

@@ -68,6 +68,26 @@ CriticalSpeedStudySettings study_settings(const CriticalSpeedSettings& sc) {
   return s;
 }
 
+void apply_overrides(CriticalSpeedStudySettings& s, const CriticalSpeedOverrides& g) {
+  auto kmh = [](double& to, double given) { if (!std::isnan(given)) to = given / 3.6; };
+  auto mm = [](double& to, double given) { if (!std::isnan(given)) to = given * 1e-3; };
+  auto si = [](double& to, double given) { if (!std::isnan(given)) to = given; };
+  kmh(s.v_min, g.v_min_kmh);
+  kmh(s.v_max, g.v_max_kmh);
+  kmh(s.v_step, g.v_step_kmh);
+  si(s.duration, g.duration);
+  mm(s.large_disturbance, g.large_disturbance_mm);
+  mm(s.small_disturbance, g.small_disturbance_mm);
+  mm(s.threshold, g.threshold_mm);
+  si(s.deceleration, g.deceleration);
+  if (g.continuation) s.continuation = *g.continuation;
+  if (!std::isnan(g.v_max_kmh)) {  // the given v_max is also the ramp's start
+    s.ramp_start = s.v_max;
+    s.ramp_start_source = g.v_max_name;
+  }
+  if (!std::isnan(g.large_disturbance_mm)) s.ramp_disturbance = s.large_disturbance;
+}
+
 BifurcationOptions bifurcation_options(const CriticalSpeedStudySettings& s) {
   BifurcationOptions o;
   o.v_min = s.v_min;

@@ -13,7 +13,9 @@
 // up to 12 digits) is echoed as it was given.
 #pragma once
 
+#include <cmath>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -49,6 +51,22 @@ struct CriticalSpeedStudySettings {
 // its ramping.v_start_kmh, else v_max, with its ramping.disturbance_mm, else
 // the large disturbance.
 CriticalSpeedStudySettings study_settings(const CriticalSpeedSettings& scenario_section);
+
+// What a user gives on top of a scenario's critical_speed section (the
+// command line, the Python call), in the units typed: km/h, mm, s, m/s^2;
+// NaN (or no value) = not given.
+struct CriticalSpeedOverrides {
+  double v_min_kmh = NAN, v_max_kmh = NAN, v_step_kmh = NAN;
+  double duration = NAN;  // [s]
+  double large_disturbance_mm = NAN, small_disturbance_mm = NAN, threshold_mm = NAN;
+  double deceleration = NAN;  // [m/s^2]
+  std::optional<bool> continuation;
+  std::string v_max_name = "--v-max";  // the given v_max as the ramp start's source, for the record
+};
+
+// The given values, converted to SI, replace the settings'; a given v_max is
+// also the ramp's start speed, a given large disturbance also its initial shift.
+void apply_overrides(CriticalSpeedStudySettings& settings, const CriticalSpeedOverrides& given);
 
 // The settings as the engine's sweep options (MPI on: ranks share the points).
 BifurcationOptions bifurcation_options(const CriticalSpeedStudySettings& s);

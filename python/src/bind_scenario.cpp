@@ -1,9 +1,9 @@
 // Python bindings of scenarios and the analyses over them: a scenario loaded
 // from a YAML file or from text (the Python wrapper turns a dict into JSON,
 // which is YAML), run (engine/analysis/scenario_run.hpp: channels and the
-// summary document of `railsim run`), the critical speed (the library calls of
-// `railsim critical-speed`: engine::bifurcation_sweep or engine::ramping, and
-// engine::linear_critical_speed over max(1, V_min / 4) .. 1.5 V_max), and the
+// summary document of `railsim run`), the critical speed (the library call of
+// `railsim critical-speed`, engine::analyse_critical_speed, with the settings
+// resolved as the command resolves them), and the
 // modes versus speed (engine/analysis/mode_sweep.hpp, as `railsim modes`).
 // Speeds in km/h and shifts in mm where the command line has them; the
 // returned arrays say their unit in their name. The GIL is released while the
@@ -20,6 +20,7 @@
 #include "contact/reduction.hpp"
 #include "core/errors.hpp"
 #include "engine/analysis/critical_speed.hpp"
+#include "engine/analysis/critical_speed_study.hpp"
 #include "engine/analysis/mode_sweep.hpp"
 #include "engine/analysis/scenario_run.hpp"
 #include "engine/io/scenario.hpp"
@@ -64,14 +65,10 @@ py::dict run(const engine::Scenario& sc, const std::string& out_dir) {
   return d;
 }
 
-double or_default(double v, double fallback) { return std::isnan(v) ? fallback : v; }
-
 py::dict critical_speed(const engine::Scenario& base, const std::string& method, const std::string& model,
                         const std::string& reduction, double v_min_kmh, double v_max_kmh, double v_step_kmh,
                         double duration, double disturbance_mm, double small_disturbance_mm, double threshold_mm,
                         double deceleration, bool up_branch, int continuation, int threads, const std::string& dir) {
-  if (method != "bifurcation" && method != "ramping")
-    throw InputError("method: expected 'bifurcation' or 'ramping' (got '" + method + "')");
   contact::ReductionFactors k;
   const contact::ReductionFactors* kp = nullptr;
   if (!reduction.empty()) {
@@ -79,23 +76,35 @@ py::dict critical_speed(const engine::Scenario& base, const std::string& method,
     kp = &k;
   }
   const engine::Scenario sc = engine::with_contact(base, model, kp);
-  const engine::CriticalSpeedSettings& s = sc.critical_speed;
-  const bool range_given = !std::isnan(v_max_kmh), disturbance_given = !std::isnan(disturbance_mm);
-  v_min_kmh = or_default(v_min_kmh, s.v_min * 3.6);
-  v_max_kmh = or_default(v_max_kmh, s.v_max * 3.6);
-  v_step_kmh = or_default(v_step_kmh, s.v_step * 3.6);
-  duration = or_default(duration, s.duration);
-  disturbance_mm = or_default(disturbance_mm, s.disturbance * 1e3);
-  small_disturbance_mm = or_default(small_disturbance_mm, s.small_disturbance * 1e3);
-  threshold_mm = or_default(threshold_mm, s.threshold * 1e3);
-  deceleration = or_default(deceleration, s.deceleration);
-  const bool cont = continuation < 0 ? s.continuation : continuation == 1;
-  if (!(v_min_kmh >= 0 && v_max_kmh > v_min_kmh && v_step_kmh > 0))
+  // The settings as `railsim critical-speed` resolves them: the scenario's
+  // critical_speed section, then what the call gives (NaN = not given).
+  engine::CriticalSpeedStudySettings st = engine::study_settings(sc.critical_speed);
+  st.method = engine::parse_critical_speed_method(method, "method");
+  engine::CriticalSpeedOverrides given;
+  given.v_min_kmh = v_min_kmh;
+  given.v_max_kmh = v_max_kmh;
+  given.v_step_kmh = v_step_kmh;
+  given.duration = duration;
+  given.large_disturbance_mm = disturbance_mm;
+  given.small_disturbance_mm = small_disturbance_mm;
+  given.threshold_mm = threshold_mm;
+  given.deceleration = deceleration;
+  if (continuation >= 0) given.continuation = continuation == 1;
+  given.v_max_name = "v_max_kmh";
+  engine::apply_overrides(st, given);
+  st.up_branch = up_branch;
+  st.threads = threads;
+  if (!(st.v_min >= 0 && st.v_max > st.v_min && st.v_step > 0))
     throw InputError("speed range: need 0 <= v_min_kmh < v_max_kmh and v_step_kmh > 0");
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw InputError(dir + ": cannot create the output folder (" + ec.message() + ")");
 
+  engine::CriticalSpeedOutcome r;
+  {
+    py::gil_scoped_release release;
+    r = engine::analyse_critical_speed(sc, st, dir);
+  }
   py::dict d;
   d["scenario"] = sc.name;
   d["method"] = method;
@@ -103,32 +112,13 @@ py::dict critical_speed(const engine::Scenario& base, const std::string& method,
   d["contact_description"] = sc.model.coupling.describe();
   d["reduction"] = contact::describe_reduction(sc.model.coupling.options().reduction);
   py::dict settings;
-  settings["v_min_kmh"] = v_min_kmh, settings["v_max_kmh"] = v_max_kmh, settings["threshold_mm"] = threshold_mm;
-  const double v_lo = v_min_kmh / 3.6, v_hi = v_max_kmh / 3.6;
-  double critical = NAN, linear = NAN;
-  if (method == "bifurcation") {
-    engine::BifurcationOptions o;
-    o.v_min = v_lo;
-    o.v_max = v_hi;
-    o.v_step = v_step_kmh / 3.6;
-    o.duration = duration;
-    o.large_disturbance = disturbance_mm * 1e-3;
-    o.small_disturbance = small_disturbance_mm * 1e-3;
-    o.threshold = threshold_mm * 1e-3;
-    o.up_branch = up_branch;
-    o.continuation = cont;
-    o.threads = threads;
-    engine::BifurcationResult r;
-    {
-      py::gil_scoped_release release;
-      linear = engine::linear_critical_speed(sc, std::max(1.0, 0.25 * v_lo), 1.5 * v_hi);
-      r = engine::bifurcation_sweep(sc, o, dir + "/bifurcation.csv");
-    }
-    critical = r.nonlinear_critical_speed;
+  settings["v_min_kmh"] = st.v_min * 3.6, settings["v_max_kmh"] = st.v_max * 3.6;
+  settings["threshold_mm"] = st.threshold * 1e3;
+  if (st.method == engine::CriticalSpeedMethod::bifurcation) {
     std::vector<double> v, amp, freq, growth;
     std::vector<std::string> branch;
     std::vector<bool> failed, continued;
-    for (const auto& p : r.points) {
+    for (const auto& p : r.bifurcation.points) {
       v.push_back(p.speed * 3.6), amp.push_back(p.amplitude * 1e3), freq.push_back(p.frequency);
       growth.push_back(p.growth), branch.push_back(engine::branch_name(p.branch)), failed.push_back(p.failed);
       continued.push_back(p.continued);
@@ -138,37 +128,26 @@ py::dict critical_speed(const engine::Scenario& base, const std::string& method,
     pts["frequency_hz"] = to_array(freq), pts["growth"] = to_array(growth), pts["failed"] = failed;
     pts["continued"] = continued;
     d["points"] = pts;
-    settings["v_step_kmh"] = v_step_kmh, settings["duration_s"] = duration;
-    settings["large_disturbance_mm"] = disturbance_mm, settings["small_disturbance_mm"] = small_disturbance_mm;
-    settings["up_branch"] = up_branch, settings["continuation"] = cont;
+    settings["v_step_kmh"] = st.v_step * 3.6, settings["duration_s"] = st.duration;
+    settings["large_disturbance_mm"] = st.large_disturbance * 1e3;
+    settings["small_disturbance_mm"] = st.small_disturbance * 1e3;
+    settings["up_branch"] = st.up_branch, settings["continuation"] = st.continuation;
   } else {
-    engine::RampingOptions o;
-    const double start = range_given || s.ramp_start <= 0 ? v_max_kmh : s.ramp_start * 3.6;
-    const double dist = disturbance_given || s.ramp_disturbance <= 0 ? disturbance_mm : s.ramp_disturbance * 1e3;
-    o.v_start = start / 3.6;
-    o.v_end = v_lo;
-    o.deceleration = deceleration;
-    o.disturbance = dist * 1e-3;
-    o.threshold = threshold_mm * 1e-3;
-    engine::RampingResult r;
-    {
-      py::gil_scoped_release release;
-      linear = engine::linear_critical_speed(sc, std::max(1.0, 0.25 * v_lo), 1.5 * v_hi);
-      r = engine::ramping(sc, o);
-    }
-    critical = r.critical_speed;
-    std::vector<double> v(r.speed.size()), y(r.max_lateral.size());
-    for (std::size_t i = 0; i < v.size(); ++i) v[i] = r.speed[i] * 3.6;
-    for (std::size_t i = 0; i < y.size(); ++i) y[i] = r.max_lateral[i] * 1e3;
+    const engine::RampingResult& rr = r.ramping;
+    std::vector<double> v(rr.speed.size()), y(rr.max_lateral.size());
+    for (std::size_t i = 0; i < v.size(); ++i) v[i] = rr.speed[i] * 3.6;
+    for (std::size_t i = 0; i < y.size(); ++i) y[i] = rr.max_lateral[i] * 1e3;
     py::dict rec;
-    rec["time_s"] = to_array(r.time), rec["speed_kmh"] = to_array(v), rec["max_lateral_mm"] = to_array(y);
+    rec["time_s"] = to_array(rr.time), rec["speed_kmh"] = to_array(v), rec["max_lateral_mm"] = to_array(y);
     d["ramping"] = rec;
-    d["hunting_at_start"] = r.hunting_at_start;
-    d["hunting_at_end"] = r.hunting_at_end;
-    settings["start_speed_kmh"] = start, settings["disturbance_mm"] = dist, settings["deceleration_m_s2"] = deceleration;
+    d["hunting_at_start"] = rr.hunting_at_start;
+    d["hunting_at_end"] = rr.hunting_at_end;
+    settings["start_speed_kmh"] = st.ramp_start * 3.6, settings["disturbance_mm"] = st.ramp_disturbance * 1e3;
+    settings["deceleration_m_s2"] = st.deceleration;
   }
-  d["critical_speed_kmh"] = std::isnan(critical) ? py::object(py::none()) : py::object(py::float_(critical * 3.6));
-  d["linear_critical_speed_kmh"] = std::isnan(linear) ? py::object(py::none()) : py::object(py::float_(linear * 3.6));
+  d["critical_speed_kmh"] = std::isnan(r.critical) ? py::object(py::none()) : py::object(py::float_(r.critical * 3.6));
+  d["linear_critical_speed_kmh"] =
+      std::isnan(r.linear) ? py::object(py::none()) : py::object(py::float_(r.linear * 3.6));
   d["settings"] = settings;
   return d;
 }

@@ -80,3 +80,31 @@ def test_modes_match_the_program(cli, tmp_path):
     np.testing.assert_allclose([float(r["frequency_hz"]) for r in rows], m["frequency_hz"], rtol=1e-8)
     if m["linear_critical_speed_kmh"] is not None:
         assert f"{m['linear_critical_speed_kmh']:.1f} km/h" in text
+
+
+def test_critical_speed_matches_the_program(cli, tmp_path):
+    # The same library call as `railsim critical-speed`, with the settings resolved the same way:
+    # the sweep points, the nonlinear and the linear critical speed agree with the program's files.
+    sc = railsim.load_scenario(SINGLE)
+    for method in ("bifurcation", "ramping"):
+        out = tmp_path / method
+        r = railsim.critical_speed(sc, method=method, v_min_kmh=60, v_max_kmh=180, v_step_kmh=60, duration=1.0)
+        code, text = cli("critical-speed", SINGLE, "--method", method, "--v-min", 60, "--v-max", 180, "--v-step", 60,
+                         "--duration", 1.0, "--out", out)
+        assert code == 0, text
+        with open(out / "summary.json") as f:
+            s = json.load(f)
+        for key in ("critical_speed_kmh", "linear_critical_speed_kmh"):
+            if s.get(key) is None:
+                assert r[key] is None, key
+            else:
+                assert r[key] == pytest.approx(s[key], rel=1e-9), key
+        if method == "bifurcation":
+            with open(out / "bifurcation.csv") as f:
+                rows = list(csv.DictReader(f))
+            assert len(rows) == r["points"]["speed_kmh"].size
+            amp_key = next(k for k in rows[0] if k.startswith("amplitude"))
+            np.testing.assert_allclose(sorted(float(x[amp_key]) for x in rows),
+                                       sorted(r["points"]["amplitude_mm"]), rtol=1e-9, atol=1e-12)
+        else:
+            assert r["settings"]["start_speed_kmh"] == pytest.approx(180.0)
