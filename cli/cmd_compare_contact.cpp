@@ -37,6 +37,7 @@
 #include "contact/reduction.hpp"
 #include "contact/registry.hpp"
 #include "core/errors.hpp"
+#include "core/output_lock.hpp"
 #include "engine/analysis/contact_comparison.hpp"
 #include "results/chart.hpp"
 #include "results/csv_writer.hpp"
@@ -242,6 +243,7 @@ int run_compare_contact(const CompareArgs& a) {
   std::error_code ec;
   fs::create_directories(a.out, ec);
   if (ec) throw InputError("--out " + a.out + ": cannot create the folder (" + ec.message() + ")");
+  const OutputLock lock(a.out);  // one writer per output folder
 
   std::vector<engine::ComparisonCase> cases;
   for (const auto& c : set.cases) cases.push_back({c.id, c.input});

@@ -12,6 +12,7 @@
 
 #include "cli/commands.hpp"
 #include "core/errors.hpp"
+#include "core/output_lock.hpp"
 #include "engine/analysis/yq_comparison.hpp"
 #include "results/chart.hpp"
 #include "results/csv_writer.hpp"
@@ -29,6 +30,10 @@ struct CompareYqArgs {
 };
 
 int run_compare_yq(const CompareYqArgs& a) {
+  std::error_code ec;
+  std::filesystem::create_directories(a.out, ec);
+  if (ec) throw InputError("--out " + a.out + ": cannot create the folder (" + ec.message() + ")");
+  const OutputLock lock(a.out);  // one writer per output folder
   const engine::Scenario sc = engine::load_scenario(a.scenario);
   std::vector<std::string> labels;
   if (!a.labels.empty()) {
@@ -36,9 +41,6 @@ int run_compare_yq(const CompareYqArgs& a) {
     for (std::string l; std::getline(ss, l, ',');) labels.push_back(l);
   }
   const engine::YqComparison c = engine::compare_yq(sc, a.runs, labels, a.wheelset);
-  std::error_code ec;
-  std::filesystem::create_directories(a.out, ec);
-  if (ec) throw InputError("--out " + a.out + ": cannot create the folder (" + ec.message() + ")");
   {
     results::CsvWriter csv(a.out + "/yq_comparison.csv",
                            {"run", "wheel", "max_abs_yq", "yq_at_max", "distance_m", "time_s", "nadal_limit",

@@ -16,6 +16,7 @@
 #include "cli/support_contact_cases.hpp"
 #include "contact/registry.hpp"
 #include "core/errors.hpp"
+#include "core/output_lock.hpp"
 
 namespace railsim::cli {
 
@@ -37,6 +38,7 @@ int run_demo(const std::string& out_dir) {
   std::error_code ec;
   std::filesystem::create_directories(out_dir, ec);
   if (ec) throw InputError("--out: cannot create folder '" + out_dir + "': " + ec.message());
+  const OutputLock lock(out_dir);  // one writer per output folder
   const std::string csv_path = (std::filesystem::path(out_dir) / "demo.csv").string();
   results::CsvWriter csv(csv_path, contact_csv_columns());
 

@@ -55,6 +55,11 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
+    if (dynamic_cast<const CLI::RequiredError*>(&e) != nullptr && app.get_subcommands().empty()) {
+      std::cerr << "railsim: no subcommand given (one of: " << railsim::cli::subcommand_names(app)
+                << "; see railsim --help)\n";
+      return railsim::kExitBadInput;
+    }
     const int code = app.exit(e);
     // --help and --version are successes; everything else is bad input.
     return code == 0 ? railsim::kExitSuccess : railsim::kExitBadInput;

@@ -172,6 +172,7 @@ TEST_CASE("railsim on bad options: exit 2 naming the option and the range", "[cl
       {"unknown subcommand", "frobnicate " + sc, {"unknown subcommand 'frobnicate' (known: version, run,"}},
       {"unknown subcommand after a global option", "--log-level warn frobnicate",
        {"unknown subcommand 'frobnicate'"}},
+      {"no subcommand", "--log-level warn", {"railsim: no subcommand given (one of: version, run,"}},
       {"--speed-kmh nan on track", "track '" + test::source_path("tracks/curve_R300.yaml") + "' --out '" + dir +
                                        "/t.csv' --speed-kmh nan",
        {"--speed-kmh: expected a finite number (got 'nan')"}},
@@ -230,8 +231,10 @@ TEST_CASE("a second railsim writing the same output folder exits 2 naming the fo
   const std::string sc = "'" + test::source_path("scenarios/single_wheelset.yaml") + "'";
   {
     const OutputLock held(dir);  // this process writes there
-    for (const std::string& cmd : {"modes " + sc + " --v-min 20 --v-max 30", "run " + sc + " --set duration=0.1",
-                                  "critical-speed " + sc})
+    for (const std::string& cmd :
+         {"modes " + sc + " --v-min 20 --v-max 30", "run " + sc + " --set duration=0.1", "critical-speed " + sc,
+          std::string("demo"), "compare-contact '" + test::data_path("compare_contact_small.yaml") + "'",
+          "compare-yq " + sc + " '" + dir + "'"})
       check_exit_2({{cmd, cmd + " --out '" + dir + "'",
                      {dir + ": another railsim process (pid " + std::to_string(::getpid()) + ") is writing"}}});
   }
