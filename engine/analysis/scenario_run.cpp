@@ -702,6 +702,13 @@ Evaluation evaluate_history(const engine::Scenario& sc, const engine::SafetySett
   return ev;
 }
 
+// The scenario reader's warnings (implausible inputs, no equilibrium at the start) as a JSON array.
+results::Json scenario_warnings(const Scenario& sc) {
+  results::Json warn = results::Json::array();
+  for (const std::string& w : sc.warnings) warn.push(w);
+  return warn;
+}
+
 }  // namespace
 
 ScenarioRunResult run_scenario(const Scenario& sc, const ScenarioRunOptions& o) {
@@ -785,6 +792,7 @@ ScenarioRunResult run_scenario(const Scenario& sc, const ScenarioRunOptions& o) 
     if (csv) csv->close();
     summary.set("status", "derailed");
     summary.set("derailment", e.what());
+    summary.set("warnings", scenario_warnings(sc));
     evaluate_history(sc, settings, history, summary, o.out_dir, e.what());  // up to the derailment: FAIL
     summary["running_safety"].set("pass", false);
     summary["running_safety"].set("derailment", e.what());
@@ -799,6 +807,7 @@ ScenarioRunResult run_scenario(const Scenario& sc, const ScenarioRunOptions& o) 
     if (csv) csv->close();
     summary.set("status", "failed");
     summary.set("error", e.what());
+    summary.set("warnings", scenario_warnings(sc));  // e.g. no equilibrium at the start
     summary.set("running_safety", "not evaluated: the run failed numerically");
     if (files) summary.write_file(o.out_dir + "/summary.json");
     throw;
@@ -836,8 +845,7 @@ ScenarioRunResult run_scenario(const Scenario& sc, const ScenarioRunOptions& o) 
   summary.set("max_lateral_shift_absolute", overall_abs);
   summary.set("max_lateral_shift_absolute_definition", "relative to the design centre line of the track [m]");
   summary.set("max_lateral_shift_absolute_per_wheelset", maxa);
-  results::Json warn = results::Json::array();
-  for (const std::string& w : sc.warnings) warn.push(w);  // legal but implausible inputs (scenario reader)
+  results::Json warn = scenario_warnings(sc);
   for (const std::string& w : wheel_load_warnings(history)) {  // legal but implausible results
     spdlog::warn("{}", w);
     warn.push(w);

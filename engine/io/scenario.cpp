@@ -4,6 +4,7 @@
 #include <spdlog/spdlog.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <limits>
 
@@ -331,9 +332,14 @@ void read_start_state(const InputNode& root, Scenario& sc) {
     const EquilibriumResult eq = static_equilibrium(m, 0.0);
     if (eq.converged) {
       sc.x0 = eq.x;
-    } else {
-      spdlog::warn("scenario '{}': no static equilibrium at the start ({}); starting from the nominal state", sc.name,
-                   eq.message);
+    } else {  // said in the run's summary.json (warnings) and the log
+      char head[160];
+      std::snprintf(head, sizeof head,
+                    "no (quasi-)static equilibrium found at the start (residual: largest acceleration %.3g m/s^2)",
+                    eq.residual);
+      sc.warnings.push_back("scenario '" + sc.name + "': " + head + "; starting from the nominal state (every body "
+                            "centred on its track frame, a start transient follows): " + eq.message);
+      spdlog::warn("{}", sc.warnings.back());
     }
     sc.start_residual = eq.residual;
   }
