@@ -189,7 +189,8 @@ TEST_CASE("Nadal's flange-climb check is on the 2 m mean of |Y/Q|: sustained abo
     const RunHistory m = history(1001, 0.01, 10.0, 1.0, [L](double, double x, double& yl, double&, double&, double&) {
       if (x >= 60.0 - 1e-9 && x <= 60.0 + L + 1e-9) yl = -70e3;
     });
-    const WheelSafety& sm = evaluate_run_safety(m, 70.0 * kDeg, 0.3, set).wheelsets[0].wheel[0];
+    const RunSafety rm = evaluate_run_safety(m, 70.0 * kDeg, 0.3, set);  // kept: sm refers into it
+    const WheelSafety& sm = rm.wheelsets[0].wheel[0];
     CHECK(sm.max_yq_2m.value == Approx(s.max_yq_2m.value).epsilon(1e-12));
     CHECK(sm.nadal_pass == s.nadal_pass);
   }
