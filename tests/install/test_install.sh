@@ -82,8 +82,12 @@ assert (r["Fx"] < 0).all()
 print("python ok", railsim.__version__)
 PY
 
-# A consumer project: find_package(railsim), railsim::railsim.
+# A consumer project: find_package(railsim), railsim::railsim. It is compiled
+# and linked with the build's own flags, so a sanitizer build's (instrumented)
+# static libraries link into an instrumented consumer.
+cache_value() { sed -n "s/^$1:[A-Z]*=//p" "$build/CMakeCache.txt"; }
 "$cmake" -S "$src/tests/install/consumer" -B "$work/consumer" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_CXX_FLAGS="$(cache_value CMAKE_CXX_FLAGS)" -DCMAKE_EXE_LINKER_FLAGS="$(cache_value CMAKE_EXE_LINKER_FLAGS)" \
   > "$work/consumer.log" 2>&1 || { cat "$work/consumer.log"; fail "consumer configure"; }
 "$cmake" --build "$work/consumer" -j2 >> "$work/consumer.log" 2>&1 || { cat "$work/consumer.log"; fail "consumer build"; }
 grep -q -- "-I$src" "$work/consumer/compile_commands.json" && fail "consumer compiled against the source tree"
