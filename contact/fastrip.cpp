@@ -97,6 +97,12 @@ ContactForces Fastrip::compute(const ContactInput& in, TangentialWorkspace* /*ws
   const double spy = in.creep.phi / L3;   // lateral spin slip / L3 per metre of x
   const double spx = in.creep.phi / L3;   // longitudinal spin slip / L3 per metre of y
 
+  // Weight of the full-slip trigger (step 4): the normalised spin
+  // psi' = G c^3 C23 k23 |phi| / (mu Fz), full from psi' = 0.1 (without spin
+  // a strip in Carter's full slip keeps Carter's exact traction).
+  const double spin_weight =
+      std::min(1.0, G * std::pow(std::sqrt(a * b), 3) * C.C23 * k.k23 * std::abs(in.creep.phi) / (0.1 * mu * Fz));
+
   const auto nx = static_cast<std::size_t>(grid_.nx);
   const StripSums sums = grid_.sum_strips(a, b, [&](std::size_t j, double y, double aj) {
     const double gj = mu * p0 * grid_.t[j];  // mu p0_j: peak of the strip's bound
@@ -112,9 +118,13 @@ ContactForces Fastrip::compute(const ContactInput& in, TangentialWorkspace* /*ws
     const double pgx = ux - upxw * y;  // (xi - phi y_j) / Lu: uniform pull of a sliding strip
     // The strip slides behind x_s (step 4): Carter's slip point d - a' when
     // spin matters on this strip, nowhere (the trailing edge) without spin,
-    // blended by chi = |phi| |(a_j, y_j)| / (0.25 |(xi, eta)|) in [0, 1].
-    const double chi =
-        creep_norm > 0.0 ? std::min(1.0, std::abs(in.creep.phi) * std::hypot(aj, y) / (0.25 * creep_norm)) : 1.0;
+    // blended by chi = |phi| |(a_j, y_j)| / (0.25 |(xi, eta)|) in [0, 1];
+    // and from the leading edge once the strip's creepage alone saturates it
+    // (Carter's full slip, S = |w| / (mu p0_j) >= 1), reached at S = 2.
+    const double full = std::clamp((gj > 0.0 ? W / gj : 1.0) - 1.0, 0.0, 1.0) * spin_weight;
+    const double chi = std::max(
+        creep_norm > 0.0 ? std::min(1.0, std::abs(in.creep.phi) * std::hypot(aj, y) / (0.25 * creep_norm)) : 1.0,
+        full);
     const double xs = chi * (d - ar) - (1.0 - chi) * aj;
     double sx = 0.0, sy = 0.0, xprev = aj, qprev = 0.0;
     bool slides = false;  // the strip slides from here on (bound reached, or Carter slip zone)

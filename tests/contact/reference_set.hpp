@@ -26,9 +26,12 @@ struct ReferenceState {
   double muN() const { return in.material.mu * in.patch.Fz; }
 };
 
-// The MIM solution of one file (mim_grid30.csv, mim_grid60.csv or mim_grid120.csv).
-inline std::vector<ReferenceState> load_reference_set(const std::string& file) {
-  const auto t = results::read_csv(data_path("contact/spin_reference/" + file));
+// The MIM solution of one file (mim_grid30.csv, mim_grid60.csv or mim_grid120.csv)
+// of tests/data/contact/<folder>/ (spin_reference, or deep_slip: the small
+// patches deep in full slip with spin; ids "<patch>/<scale>/<signs>").
+inline std::vector<ReferenceState> load_reference_set(const std::string& file,
+                                                      const std::string& folder = "spin_reference") {
+  const auto t = results::read_csv(data_path("contact/" + folder + "/" + file));
   const contact::Material m{2.1e11, 0.28, 0.3};  // cases.yaml
   std::vector<ReferenceState> v;
   for (std::size_t r = 0; r < t.rows.size(); ++r) {
