@@ -1,5 +1,5 @@
 // `railsim contact CASES.yaml --model NAME --out results.csv [--reduction R]
-// [--grid N] [--tolerance T] [--no-timing]`:
+// [--grid N] [--tolerance T] [--extrapolation none|richardson] [--no-timing]`:
 // runs one tangential contact model on every case of a case file (format in
 // support_contact_cases.hpp) and writes one CSV row per case with the patch,
 // the forces, the validity flag (and why) and the measured cost per call
@@ -27,6 +27,7 @@ struct ContactOptions {
   std::string reduction;
   int grid = 0;
   double tolerance = 0.0;
+  std::string extrapolation;
   std::string cache_dir;
   bool no_timing = false;
 };
@@ -39,6 +40,8 @@ int run_contact(const ContactOptions& o) {
   contact::TangentialModelOptions mo;
   mo.grid = o.grid;
   mo.tolerance = o.tolerance;
+  if (o.extrapolation == "none") mo.extrapolation = contact::GridExtrapolation::None;
+  if (o.extrapolation == "richardson") mo.extrapolation = contact::GridExtrapolation::Richardson;
   mo.cache_dir = o.cache_dir;
   const auto model = contact::make_tangential_model(o.model, mo);
   const auto ws = model->make_workspace();
@@ -79,6 +82,10 @@ void register_contact(CLI::App& app, CommandRunner& run) {
       ->check(CLI::Range(0, 4000));
   cmd->add_option("--tolerance", opts->tolerance, "Solver tolerance of iterative models (0 = model default)")
       ->check(CLI::Range(0.0, 0.1));
+  cmd->add_option("--extrapolation", opts->extrapolation,
+                  "Grid extrapolation of model mim: richardson (default; from grid N and N/2) or none (the grid's "
+                  "own forces, CONTACT's discretisation)")
+      ->check(CLI::IsMember({"none", "richardson"}));
   cmd->add_option("--cache-dir", opts->cache_dir,
                   "Table cache folder of cached-table models (mim_table; default $RAILSIM_CACHE_DIR, "
                   "$XDG_CACHE_HOME/railsim or ~/.cache/railsim)");

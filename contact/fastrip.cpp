@@ -97,6 +97,13 @@ ContactForces Fastrip::compute(const ContactInput& in, TangentialWorkspace* /*ws
   const double spy = in.creep.phi / L3;   // lateral spin slip / L3 per metre of x
   const double spx = in.creep.phi / L3;   // longitudinal spin slip / L3 per metre of y
 
+  // Weight of the full-slip trigger (step 4): the normalised spin
+  // psi' = G c^3 C23 k23 |phi| / (mu Fz), full from psi' = 0.1 (without spin
+  // a strip in Carter's full slip keeps Carter's exact traction).
+  const double cab = std::sqrt(a * b);
+  const double spin_weight =
+      std::min(1.0, G * cab * cab * cab * C.C23 * k.k23 * std::abs(in.creep.phi) / (0.1 * mu * Fz));
+
   const auto nx = static_cast<std::size_t>(grid_.nx);
   const StripSums sums = grid_.sum_strips(a, b, [&](std::size_t j, double y, double aj) {
     const double gj = mu * p0 * grid_.t[j];  // mu p0_j: peak of the strip's bound
@@ -112,11 +119,15 @@ ContactForces Fastrip::compute(const ContactInput& in, TangentialWorkspace* /*ws
     const double pgx = ux - upxw * y;  // (xi - phi y_j) / Lu: uniform pull of a sliding strip
     // The strip slides behind x_s (step 4): Carter's slip point d - a' when
     // spin matters on this strip, nowhere (the trailing edge) without spin,
-    // blended by chi = |phi| |(a_j, y_j)| / (0.25 |(xi, eta)|) in [0, 1].
-    const double chi =
-        creep_norm > 0.0 ? std::min(1.0, std::abs(in.creep.phi) * std::hypot(aj, y) / (0.25 * creep_norm)) : 1.0;
+    // blended by chi = |phi| |(a_j, y_j)| / (0.25 |(xi, eta)|) in [0, 1];
+    // and from the leading edge once the strip's creepage alone saturates it
+    // (Carter's full slip, S = |w| / (mu p0_j) >= 1), reached at S = 2.
+    const double full = std::clamp((gj > 0.0 ? W / gj : 1.0) - 1.0, 0.0, 1.0) * spin_weight;
+    const double chi = std::max(
+        creep_norm > 0.0 ? std::min(1.0, std::abs(in.creep.phi) * std::hypot(aj, y) / (0.25 * creep_norm)) : 1.0,
+        full);
     const double xs = chi * (d - ar) - (1.0 - chi) * aj;
-    double sx = 0.0, sy = 0.0, xprev = aj, qprev = 0.0;
+    double sx = 0.0, sy = 0.0, qprev = 0.0;
     bool slides = false;  // the strip slides from here on (bound reached, or Carter slip zone)
     double fx = 0.0, fy = 0.0, mz = 0.0, adh = 0.0;
     // Adhesion-ellipse integrals at the upper boundary of the current element
@@ -125,8 +136,8 @@ ContactForces Fastrip::compute(const ContactInput& in, TangentialWorkspace* /*ws
     bool in_adhesion = W > 0.0 && ar > 0.0;
     for (std::size_t kk = 0; kk < nx; ++kk) {
       const double x = aj * grid_.Xc[kk];
-      const double dx = xprev - x;
-      const double xm = 0.5 * (x + xprev);
+      const double dx = aj * grid_.step[kk];             // from the previous point
+      const double xmdx = aj * aj * grid_.step_mid[kk];  // the step times its midpoint
       const double w = aj * grid_.dX[kk];
       // Strip-theory traction: analytic integral and first moment over the element.
       double I = 0.0, M = 0.0, q = 0.0;
@@ -157,11 +168,11 @@ ContactForces Fastrip::compute(const ContactInput& in, TangentialWorkspace* /*ws
         // Sliding strip: no more strip-theory increments (cancelled in s); the
         // total traction is marched as in FASTSIM (step 4).
         sx -= (q - qprev) * ex + pgx * dx;
-        sy -= (q - qprev) * ey + (uy + spy * xm) * dx;
+        sy -= (q - qprev) * ey + uy * dx + spy * xmdx;
       } else {
         // Spin, FASTSIM-like (step 4), on top of the strip traction.
         sx += sgx * dx;
-        sy -= spy * xm * dx;
+        sy -= spy * xmdx;
       }
       qprev = q;
       double tx = q * ex + sx, ty = q * ey + sy;
@@ -180,7 +191,6 @@ ContactForces Fastrip::compute(const ContactInput& in, TangentialWorkspace* /*ws
       fx += I * ex + sx * w;
       fy += I * ey + sy * w;
       mz += M * ey + x * sy * w;
-      xprev = x;
     }
     return StripForces{fx, fy, mz, adh};
   });

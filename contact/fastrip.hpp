@@ -41,7 +41,19 @@
 //    behind x_s = chi (d - a') - (1 - chi) a_j, i.e. from Carter's slip point
 //    of its creepage when spin matters on the strip (chi = 1) and nowhere
 //    without spin (chi = 0): chi = |phi| |(a_j, y_j)| / (0.25 |(xi, eta)|)
-//    clipped to [0, 1]. (With only the first trigger, lateral creepage
+//    clipped to [0, 1], raised to 1 where the strip's creepage alone
+//    saturates it and spin is present: chi >= clamp(S - 1, 0, 1)
+//    min(1, psi'/0.1) with Carter's slip measure S = |w| / (mu p0_j) (full
+//    slip from S = 1) and the normalised spin psi' = G c^3 C23 k23 |phi| /
+//    (mu Fz) (without spin Carter's exact full-slip traction stays; the
+//    factor keeps the force continuous in phi). Without that, deep in full
+//    slip a small spin opposing the strip traction kept the total inside the
+//    bound, the strip "adhered" and the spin increments piled up: a/b 2.7,
+//    545 N, xi = 0.05, eta = 0.035, phi = -0.63 1/m gave Fy = -0.04 mu Fz
+//    against the exact -0.57 (a flange-root patch of the main job's contact
+//    audit had 26 % of mu Fz); every sign combination of (xi, eta, phi) at 1
+//    and 10 times that creepage on a/b 0.25, 1, 2.7 is now within 0.9 %
+//    (was 54 %), tests/data/contact/deep_slip. (With only the first trigger, lateral creepage
 //    opposing spin, eta phi < 0, stalled far below the exact force: spin kept
 //    the total under the bound in Carter's slip zone, so the strip was
 //    treated as sticking there; circular patch, phi = 1 1/m, eta = -0.01:

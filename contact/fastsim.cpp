@@ -61,6 +61,15 @@ StripGrid StripGrid::make(int nx, int ny, GridSpacing spacing_x, GridSpacing spa
     g.Xc[k] = 0.5 * (g.X[k] + g.X[k + 1]);
     g.dX[k] = g.X[k] - g.X[k + 1];
   }
+  g.step.resize(g.Xc.size());
+  g.step_mid.resize(g.Xc.size());
+  g.centre_dX.resize(g.Xc.size());
+  for (std::size_t k = 0; k < g.Xc.size(); ++k) {
+    const double prev = k == 0 ? 1.0 : g.Xc[k - 1];
+    g.step[k] = prev - g.Xc[k];
+    g.step_mid[k] = g.step[k] * 0.5 * (prev + g.Xc[k]);
+    g.centre_dX[k] = g.Xc[k] * g.dX[k];
+  }
   const std::vector<double> yb = nodes_descending(ny, spacing_y);  // strip boundaries
   g.Y.resize(static_cast<std::size_t>(ny));
   g.dY.resize(static_cast<std::size_t>(ny));
@@ -171,33 +180,33 @@ ContactForces Fastsim::compute(const ContactInput& in, TangentialWorkspace* /*ws
   const double sp = in.creep.phi / L3;   // from spin, per metre of lever arm [Pa/m^2]
 
   const auto nx = static_cast<std::size_t>(grid_.nx);
+  const double* step = grid_.step.data();
+  const double* step_mid = grid_.step_mid.data();
+  const double* dX = grid_.dX.data();
+  const double* centre_dX = grid_.centre_dX.data();
   const StripSums sums = grid_.sum_strips(a, b, [&](std::size_t j, double y, double aj) {
-    const double gx = sx - sp * y;  // longitudinal rigid slip / L, uniform on the strip
+    // Per step (normalised by a_j): px -= (xi - phi y)/L1 dx, py -= (eta/L2 + phi x/L3) dx.
+    const double cx = (sx - sp * y) * aj, cy = sy * aj, cp = sp * aj * aj;
     const double* bnd = &bound_shape_[j * nx];
-    double px = 0.0, py = 0.0, xprev = aj;
-    double fx = 0.0, fy = 0.0, mz = 0.0, adh = 0.0;
+    double px = 0.0, py = 0.0;
+    double fx = 0.0, fy = 0.0, mz = 0.0, adh = 0.0;  // per a_j (mz per a_j^2)
     for (std::size_t k = 0; k < nx; ++k) {
-      const double x = aj * grid_.Xc[k];
-      const double dx = xprev - x;
-      const double xm = 0.5 * (x + xprev);
-      px -= gx * dx;
-      py -= (sy + sp * xm) * dx;
+      px -= cx * step[k];
+      py -= cy * step[k] + cp * step_mid[k];
       const double g = gmax * bnd[k];
-      const double w = aj * grid_.dX[k];  // element length
       const double q2 = px * px + py * py;
       if (q2 > g * g) {
         const double s = g / std::sqrt(q2);
         px *= s;
         py *= s;
       } else {
-        adh += w;
+        adh += dX[k];
       }
-      fx += px * w;
-      fy += py * w;
-      mz += x * py * w;
-      xprev = x;
+      fx += px * dX[k];
+      fy += py * dX[k];
+      mz += py * centre_dX[k];
     }
-    return StripForces{fx, fy, mz, adh};
+    return StripForces{fx * aj, fy * aj, mz * aj * aj, adh * aj};
   });
   return strip_model_result(name_, in, sums);
 }

@@ -112,6 +112,11 @@ struct StripGrid {
   std::vector<double> Y;     // ny strip centres in (-1, 1)
   std::vector<double> dY;    // ny strip widths (sum 2)
   std::vector<double> t;     // ny strip half-length factors sqrt(1 - Y^2): a_j = a t_j
+  // Marching steps (per a_j): from the previous evaluation point (the leading
+  // edge X = 1 for the first) to Xc[k], step[k] = Xc[k-1] - Xc[k], and the
+  // step times its midpoint, step_mid[k] = step[k] (Xc[k-1] + Xc[k]) / 2;
+  // the element's first moment centre_dX[k] = Xc[k] dX[k].
+  std::vector<double> step, step_mid, centre_dX;
 
   // Build; nx, ny >= 2 (InputError otherwise).
   static StripGrid make(int nx, int ny, GridSpacing spacing_x, GridSpacing spacing_y);

@@ -13,12 +13,20 @@
 
 namespace railsim::contact {
 
+// Extrapolation of a grid model's forces to zero element size.
+enum class GridExtrapolation {
+  Default,     // the model's own choice (mim: Richardson)
+  None,        // the grid's own result (mim: CONTACT's discretisation, equal grid = equal forces)
+  Richardson,  // first-order Richardson extrapolation from the grid and the half grid
+};
+
 // Options common to all tangential models; a model ignores what it does not use.
 struct TangentialModelOptions {
   int grid = 0;             // discretisation (elements across the minor axis); 0 = model default
   double tolerance = 0.0;   // solver tolerance; 0 = model default
   std::string cache_dir;    // table cache folder (tabulated models); empty = default
   std::string saturation = "none";  // model "coefficients": its saturation law (saturation_laws())
+  GridExtrapolation extrapolation = GridExtrapolation::Default;  // model "mim"
 };
 
 using TangentialFactory = std::unique_ptr<TangentialModel> (*)(const TangentialModelOptions&);
@@ -28,8 +36,9 @@ struct TangentialModelEntry {
   const char* description;
   TangentialFactory make;
   // Built from a table that is computed once and cached on disk (mim_table:
-  // 56,277 MIM solves at grid 28 the first time, about 15 - 30 min on two
-  // cores; measured once: 29 min while another solver run shared the machine). Commands that run every model by
+  // 56,277 MIM solves at grid 28, extrapolated from 28 and 14, the first
+  // time: about 3.5 min on two cores, the normal problem solved once per
+  // patch shape). Commands that run every model by
   // default (demo, compare-contact, benchmarks) leave these out unless asked.
   bool tabulated = false;
   // What the model does with spin and where that fails, measured against

@@ -27,6 +27,27 @@ void check_material(const Material& m) {
     throw InputError("mim: friction coefficient mu must be >= 0 and finite (got " + num(m.mu) + ")");
 }
 
+// A field of grid `from` interpolated bilinearly between its element centres
+// at the element centres of grid `to` (zero beyond `from`'s outer centres).
+// Continuous in position, so a field with a mirror symmetry keeps it.
+void sample_on_grid(const ContactGrid& from, const double* f, const ContactGrid& to, double* out) {
+  const auto value = [&](int i, int j) {
+    return (i >= 0 && i < from.mx && j >= 0 && j < from.my) ? f[from.index(i, j)] : 0.0;
+  };
+  for (int j = 0; j < to.my; ++j) {
+    const double sy = (to.y(j) - from.y0) / from.dy - 0.5;
+    const int j0 = static_cast<int>(std::floor(sy));
+    const double wy = sy - j0;
+    for (int i = 0; i < to.mx; ++i) {
+      const double sx = (to.x(i) - from.x0) / from.dx - 0.5;
+      const int i0 = static_cast<int>(std::floor(sx));
+      const double wx = sx - i0;
+      out[to.index(i, j)] = (1.0 - wy) * ((1.0 - wx) * value(i0, j0) + wx * value(i0 + 1, j0)) +
+                            wy * ((1.0 - wx) * value(i0, j0 + 1) + wx * value(i0 + 1, j0 + 1));
+    }
+  }
+}
+
 void check_patch(const HertzPatch& p) {
   for (auto [v, name] : {std::pair{p.A, "A"}, {p.B, "B"}, {p.a, "a"}, {p.b, "b"}, {p.Fz, "Fz"}})
     if (!(v > 0.0) || !std::isfinite(v))
@@ -72,6 +93,7 @@ void MimSolver::prepare(const ContactGrid& grid, const Material& material) {
     const bool resize = !op_ || op_->grid().size() != grid.size();
     op_ = std::make_unique<InfluenceOperator>(grid, pair, layer, opt_.fftw_flags);
     have_previous_ = false;
+    have_normal_ = false;
     if (resize) {
       const int n = grid.size();
       nsolver_ = std::make_unique<NormalSolver>(n);
@@ -90,15 +112,23 @@ void MimSolver::prepare(const ContactGrid& grid, const Material& material) {
   sol_.tangential = TangentialResult{};
 }
 
-void MimSolver::normal(const std::vector<double>& gap, double Fz) {
+void MimSolver::normal(const std::vector<double>& gap, double Fz, const MimSolution* start) {
   if (!(Fz > 0.0) || !std::isfinite(Fz)) throw InputError("mim: normal load Fz must be positive (got " + num(Fz) + ")");
   if (static_cast<int>(gap.size()) != sol_.grid.size())
     throw InputError("mim: gap has " + std::to_string(gap.size()) + " values, grid has " +
                      std::to_string(sol_.grid.size()) + " elements");
   for (double v : gap)
     if (!std::isfinite(v)) throw InputError("mim: gap values must be finite");
+  // The same normal problem as last time on this operator: its solution stands
+  // (sol_.pn and sol_.normal are untouched since; the solver is deterministic).
+  if (have_normal_ && Fz == normal_Fz_ && gap == normal_gap_) return;
+  have_normal_ = false;
   NormalOptions no;
   no.tolerance = opt_.normal_tolerance;
+  if (start != nullptr && start != &sol_ && start->grid.size() > 0) {
+    sample_on_grid(start->grid, start->pn.data(), sol_.grid, sol_.pn.data());
+    no.initial_guess = true;
+  }
   sol_.normal = nsolver_->solve_load(*op_, gap.data(), Fz, sol_.pn.data(), no);
   sol_.Fz = sol_.normal.load;
   sol_.approach = sol_.normal.approach;
@@ -106,6 +136,11 @@ void MimSolver::normal(const std::vector<double>& gap, double Fz) {
   if (!sol_.normal.converged && opt_.throw_on_failure)
     throw NumericalError("mim: normal solver did not converge in " + std::to_string(sol_.normal.iterations) +
                          " iterations (Fz = " + num(Fz) + " N, residual " + num(sol_.normal.residual) + ")");
+  if (sol_.normal.converged) {
+    have_normal_ = true;
+    normal_gap_ = gap;
+    normal_Fz_ = Fz;
+  }
 }
 
 void MimSolver::tangential(TangentialProblem kind, double w1, double w2, double w3, double mu) {
@@ -176,7 +211,7 @@ const MimSolution& MimSolver::solve_gap(const ContactGrid& grid, const std::vect
 }
 
 const MimSolution& MimSolver::solve_hertz(const HertzPatch& patch, const Creepages& creep,
-                                          const Material& material) {
+                                          const Material& material, const MimSolution* start) {
   check_patch(patch);
   const ContactGrid g = grid_for_patch(patch.a, patch.b, opt_.grid);
   prepare(g, material);
@@ -185,7 +220,7 @@ const MimSolution& MimSolver::solve_hertz(const HertzPatch& patch, const Creepag
     for (int i = 0; i < gg.mx; ++i) gap_[gg.index(i, j)] = patch.A * gg.x(i) * gg.x(i) + patch.B * gg.y(j) * gg.y(j);
   for (double v : {creep.xi, creep.eta, creep.phi})
     if (!std::isfinite(v)) throw InputError("mim: creepages must be finite");
-  normal(gap_, patch.Fz);
+  normal(gap_, patch.Fz, start);
   tangential(TangentialProblem::SteadyRolling, creep.xi, creep.eta, creep.phi, material.mu);
   return sol_;
 }
@@ -208,39 +243,73 @@ namespace {
 
 class MimWorkspace final : public TangentialWorkspace {
  public:
-  explicit MimWorkspace(const MimOptions& o) : solver(o) {}
-  MimSolver solver;
+  MimWorkspace(const MimOptions& o, const MimOptions* half)
+      : solver(o), coarse(half ? std::make_unique<MimSolver>(*half) : nullptr) {}
+  MimSolver solver;                   // the grid N
+  std::unique_ptr<MimSolver> coarse;  // the half grid N/2 (Richardson extrapolation only)
 };
 
 // Tangential model "mim": the exact steady-rolling solution for the Hertzian
 // patch of the input. Reduction factors scale the creepages (k11 xi, k22 eta,
 // k23 phi), the normalised-table interpretation of physics-reference sec. 11.
+//
+// Richardson extrapolation (default; Richardson 1911, the h -> 0 limit of a
+// first-order method): the forces converge linearly with the element size h
+// (first-order rolling step, mim_model.hpp), F_N = F + C h, so with the half
+// grid N_c = N/2 (rounded down; element size exactly 2 h when N is even)
+//   F = (N F_N - N_c F_c) / (N - N_c)            (2 F_N - F_{N/2} for even N).
+// Measured on tests/data/contact/spin_reference (764 states, a/b 0.2 - 5):
+// extrapolated grid 60 against extrapolated grid 120 within 0.232 % of mu Fz
+// (mean 0.03 %), where the plain grids differ by up to 0.487 % (mean 0.07 %);
+// the half-grid solve adds about 20 % to the cost. Tried and not taken: a
+// second-order upwind rolling step (3 u_i - 4 u_{i+1} + u_{i+2})/(2 dx)
+// converges pure creepage with h^2 but leaves spin cases first-order (worst
+// state 0.506 % between grid 60 and 120). Stick fraction and iterations
+// describe the grid N solve.
 class MimModel final : public TangentialModel {
  public:
-  explicit MimModel(const MimOptions& o) : opt_(o) { opt_.check(); }
+  MimModel(const MimOptions& o, bool richardson) : opt_(o), half_(o), richardson_(richardson) {
+    opt_.check();
+    if (richardson_ && opt_.grid < 8)
+      throw InputError("mim: Richardson extrapolation needs a grid of at least 8 elements across the minor axis "
+                       "(got " + std::to_string(opt_.grid) + "); use a finer grid or extrapolation none");
+    half_.grid = opt_.grid / 2;
+  }
   std::string_view name() const override { return "mim"; }
   std::unique_ptr<TangentialWorkspace> make_workspace() const override {
-    return std::make_unique<MimWorkspace>(opt_);
+    return std::make_unique<MimWorkspace>(opt_, richardson_ ? &half_ : nullptr);
   }
   ContactForces compute(const ContactInput& in, TangentialWorkspace* ws) const override {
     std::unique_ptr<MimWorkspace> local;
     auto* w = dynamic_cast<MimWorkspace*>(ws);
     if (!w) {
-      local = std::make_unique<MimWorkspace>(opt_);
+      local = std::make_unique<MimWorkspace>(opt_, richardson_ ? &half_ : nullptr);
       w = local.get();
     }
     HertzPatch patch = in.patch;
     if (!(patch.a > 0.0) || !(patch.b > 0.0)) patch = hertz_from_load(patch.A, patch.B, patch.Fz, in.material);
     const Creepages c{in.reduction.k11 * in.creep.xi, in.reduction.k22 * in.creep.eta,
                       in.reduction.k23 * in.creep.phi};
-    const MimSolution& s = w->solver.solve_hertz(patch, c, in.material);
+    // The half grid first: its pressure starts the fine grid's normal iteration.
+    const MimSolution* h = w->coarse ? &w->coarse->solve_hertz(patch, c, in.material) : nullptr;
+    const MimSolution& s = w->solver.solve_hertz(patch, c, in.material, h);
     ContactForces f;
     f.Fx = s.Fx;
     f.Fy = s.Fy;
     f.Mz = s.Mz;
     f.iterations = s.normal.iterations + s.tangential.iterations;
     f.stick_fraction = s.n_contact > 0 ? static_cast<double>(s.n_adhesion) / s.n_contact : -1.0;
-    if (!s.converged()) {
+    bool converged = s.converged();
+    if (h) {
+      const double N = opt_.grid, Nc = half_.grid;
+      auto extrapolate = [&](double fine, double coarse) { return (N * fine - Nc * coarse) / (N - Nc); };
+      f.Fx = extrapolate(s.Fx, h->Fx);
+      f.Fy = extrapolate(s.Fy, h->Fy);
+      f.Mz = extrapolate(s.Mz, h->Mz);
+      f.iterations += h->normal.iterations + h->tangential.iterations;
+      converged = converged && h->converged();
+    }
+    if (!converged) {
       f.valid = false;
       f.reason = "mim: solver did not converge";
     }
@@ -248,7 +317,8 @@ class MimModel final : public TangentialModel {
   }
 
  private:
-  MimOptions opt_;
+  MimOptions opt_, half_;
+  bool richardson_;
 };
 
 }  // namespace
@@ -259,6 +329,6 @@ std::unique_ptr<TangentialModel> make_mim(const TangentialModelOptions& options)
   mim::MimOptions o;
   if (options.grid != 0) o.grid = options.grid;
   if (options.tolerance != 0.0) o.tolerance = options.tolerance;
-  return std::make_unique<mim::MimModel>(o);
+  return std::make_unique<mim::MimModel>(o, options.extrapolation != GridExtrapolation::None);
 }
 }  // namespace railsim::contact

@@ -18,7 +18,9 @@
 //      -0.5459 / -0.5528 / -0.5559; offset dx/6 -0.5550 / -0.5573 / -0.5581,
 //      CONTACT's figures to the 4th digit; offset dx/2 (the middle of the
 //      step) overshoots, -0.5729 / -0.5662 / -0.5626. Grid 60 is within
-//      0.2 % of mu Fz of grid 120 on every spin case we tried (a/b 0.2 - 5).
+//      0.49 % of mu Fz of grid 120 on the 764 states of
+//      tests/data/contact/spin_reference (a/b 0.2 - 5); the registered model
+//      "mim" extrapolates (Richardson, mim_model.cpp): within 0.23 %.
 //      xi and eta are uniform, so only spin is affected.
 // Outputs: pressure and traction fields, stick/slip map, total forces and
 // spin moment. Sign conventions as contact/types.hpp: forces of the rail on
@@ -89,8 +91,12 @@ class MimSolver {
   const MimOptions& options() const { return opt_; }
 
   // Steady rolling on a Hertzian patch: patch.A, B, a, b, Fz must be positive.
+  // `start`: a solution of the same problem on another (coarser) grid; its
+  // pressure, interpolated at this grid's element centres, starts the normal
+  // iteration (nested iteration: fewer iterations, the same converged result
+  // to the tolerance).
   const MimSolution& solve_hertz(const HertzPatch& patch, const Creepages& creep,
-                                 const Material& material);
+                                 const Material& material, const MimSolution* start = nullptr);
   // Steady rolling with any undeformed gap h [m] on `grid` and load Fz [N].
   const MimSolution& solve_gap(const ContactGrid& grid, const std::vector<double>& gap, double Fz,
                                const Creepages& creep, const Material& material);
@@ -106,7 +112,10 @@ class MimSolver {
 
  private:
   void prepare(const ContactGrid& grid, const Material& material);
-  void normal(const std::vector<double>& gap, double Fz);
+  // The normal problem; reused unchanged when the gap and the load are those
+  // of the last solve on this grid (creepage sweeps on one patch), started
+  // from `start`'s pressure sampled on this grid when given.
+  void normal(const std::vector<double>& gap, double Fz, const MimSolution* start = nullptr);
   void tangential(TangentialProblem kind, double w1, double w2, double w3, double mu);
   void finish(const char* what);
 
@@ -117,12 +126,17 @@ class MimSolver {
   std::vector<double> gap_, wx_, wy_, bound_;
   MimSolution sol_;
   bool have_previous_ = false;  // sol_.px, py hold a converged solution on this grid
+  bool have_normal_ = false;    // sol_.pn solves (normal_gap_, normal_Fz_) on this grid
+  std::vector<double> normal_gap_;
+  double normal_Fz_ = 0.0;
   TangentialProblem previous_kind_ = TangentialProblem::SteadyRolling;
 };
 
 }  // namespace railsim::contact::mim
 
 namespace railsim::contact {
-// Factory of the registered tangential model "mim" (options grid, tolerance).
+// Factory of the registered tangential model "mim" (options grid, tolerance,
+// extrapolation: Richardson from the grid and the half grid unless None,
+// see mim_model.cpp; the MimSolver facade above never extrapolates).
 std::unique_ptr<TangentialModel> make_mim(const TangentialModelOptions& options);
 }  // namespace railsim::contact

@@ -37,7 +37,13 @@ NormalResult NormalSolver::run(InfluenceOperator& op, const double* h, bool load
   // smallest gaps (or uniform when the gap is flat).
   double hmin = h[0], hmax = h[0];
   for (int i = 0; i < n; ++i) hmin = std::min(hmin, h[i]), hmax = std::max(hmax, h[i]);
-  {
+  double given = 0.0;
+  if (opt.initial_guess && load_control)
+    for (int i = 0; i < n; ++i) given += p[i] > 0.0 && std::isfinite(p[i]) ? p[i] : 0.0;
+  if (given > 0.0) {
+    const double scale = target / (given * dA);
+    for (int i = 0; i < n; ++i) p[i] = p[i] > 0.0 && std::isfinite(p[i]) ? p[i] * scale : 0.0;
+  } else {
     const double level = load_control ? hmin + 0.3 * (hmax - hmin) : target;
     double sum = 0.0;
     for (int i = 0; i < n; ++i) {

@@ -24,6 +24,9 @@ namespace railsim::contact::mim {
 struct NormalOptions {
   double tolerance = 1e-9;    // relative pressure change per iteration
   int max_iterations = 2000;
+  // Start from the pressure given in p (scaled to the load) instead of the
+  // paraboloid guess, e.g. a coarser grid's solution; ignored if p carries no load.
+  bool initial_guess = false;
 };
 
 struct NormalResult {

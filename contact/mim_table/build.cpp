@@ -1,5 +1,6 @@
 // Building a MIM table: one live MIM solve per node on a reference patch
-// (mim_table_reference), shared among worker threads, each finished node
+// (mim_table_reference: the registered model "mim", extrapolated from grid N
+// and N/2), shared among worker threads, each finished node
 // appended to the resume log "<file>.partial" (record: node index, 3 values,
 // FNV-1a checksum of both; the log starts with the parameter hash), so an
 // interrupted build resumes from the log's valid records; see mim_table.hpp.
@@ -38,35 +39,41 @@ using mim_table_detail::s_of_v;
 
 constexpr std::size_t kRecordSize = sizeof(std::uint64_t) + 3 * sizeof(double) + sizeof(std::uint64_t);
 
-void reference_solve(mim::MimSolver& solver, const MimTableSpec& spec, double aob, double xi_n, double eta_n,
-                     double psi_n, double out[3]) {
+void reference_solve(const TangentialModel& model, TangentialWorkspace* ws, const MimTableSpec& spec, double aob,
+                     double xi_n, double eta_n, double psi_n, double out[3]) {
   const double c = 6.0e-3, Fz = 75.0e3, mu = 0.3;
   const double a = c * std::sqrt(aob), b = c / std::sqrt(aob);
-  const Material m{210.0e9, spec.nu, mu};
-  const HertzPatch patch = hertz_from_semi_axes(a, b, Fz, m);
-  const double G = m.shear_modulus();
+  ContactInput in;
+  in.material = Material{210.0e9, spec.nu, mu};
+  in.patch = hertz_from_semi_axes(a, b, Fz, in.material);
+  const double G = in.material.shear_modulus();
   const KalkerCoefficients C = kalker_coefficients(aob, spec.nu);
   const double muN = mu * Fz;
-  const Creepages cr{xi_n * 3.0 * muN / (G * c * c * C.C11), eta_n * 3.0 * muN / (G * c * c * C.C22),
-                     psi_n * muN / (G * c * c * c * C.C23)};
-  const mim::MimSolution& s = solver.solve_hertz(patch, cr, m);
-  out[0] = s.Fx / muN;
-  out[1] = s.Fy / muN;
-  out[2] = s.Mz / (muN * c);
+  in.creep = {xi_n * 3.0 * muN / (G * c * c * C.C11), eta_n * 3.0 * muN / (G * c * c * C.C22),
+              psi_n * muN / (G * c * c * c * C.C23)};
+  const ContactForces f = model.solve(in, ws);
+  out[0] = f.Fx / muN;
+  out[1] = f.Fy / muN;
+  out[2] = f.Mz / (muN * c);
 }
-mim::MimOptions solver_options(const MimTableSpec& spec) {
-  mim::MimOptions o;
+
+// The registered model "mim" at the table's grid with Richardson extrapolation
+// (contact/mim/mim_model.cpp; solver id kMimTableSolverId).
+std::unique_ptr<TangentialModel> reference_model(const MimTableSpec& spec) {
+  TangentialModelOptions o;
   o.grid = spec.grid;
   o.tolerance = spec.tolerance;
-  return o;
+  o.extrapolation = GridExtrapolation::Richardson;
+  return make_mim(o);
 }
 
 }  // namespace
 
 void mim_table_reference(const MimTableSpec& spec, double aob, double xi_n, double eta_n, double psi_n,
                          double out[3]) {
-  mim::MimSolver solver(solver_options(spec));
-  reference_solve(solver, spec, aob, xi_n, eta_n, psi_n, out);
+  const auto model = reference_model(spec);
+  const auto ws = model->make_workspace();
+  reference_solve(*model, ws.get(), spec, aob, xi_n, eta_n, psi_n, out);
 }
 
 std::unique_ptr<MimTable> MimTable::build(const MimTableSpec& spec, const std::string& partial_path,
@@ -122,9 +129,11 @@ std::unique_ptr<MimTable> MimTable::build(const MimTableSpec& spec, const std::s
   std::exception_ptr error;
   std::size_t fresh = 0;
   const auto worker = [&]() {
-    std::unique_ptr<mim::MimSolver> solver;
+    std::unique_ptr<TangentialModel> model;
+    std::unique_ptr<TangentialWorkspace> solver;
     try {
-      solver = std::make_unique<mim::MimSolver>(solver_options(spec));
+      model = reference_model(spec);
+      solver = model->make_workspace();
       for (;;) {
         if (stop.load()) break;
         const std::size_t idx = next.fetch_add(1);
@@ -134,7 +143,7 @@ std::unique_ptr<MimTable> MimTable::build(const MimTableSpec& spec, const std::s
         double v[3];
         // Node (xi', e', psi') with e' = eta' + psi'/3 (mim_table.hpp).
         const double psi_n = s_of_v(spec.vpsi[l]);
-        reference_solve(*solver, spec, spec.aob[i], s_of_u(spec.uxi[j]), s_of_u(spec.ueta[k]) - psi_n / 3.0,
+        reference_solve(*model, solver.get(), spec, spec.aob[i], s_of_u(spec.uxi[j]), s_of_u(spec.ueta[k]) - psi_n / 3.0,
                         psi_n, v);
         std::lock_guard<std::mutex> lock(mtx);
         std::copy(v, v + 3, &t->values_[3 * idx]);

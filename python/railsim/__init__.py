@@ -68,13 +68,15 @@ def _reduction(reduction):
 
 
 def contact(model, xi=0.0, eta=0.0, phi=0.0, *, a=None, b=None, A=None, B=None, Fz, E=2.1e11, nu=0.28, mu=0.3,
-            V=0.0, reduction=None, grid=0, tolerance=0.0, cache_dir=""):
+            V=0.0, reduction=None, grid=0, tolerance=0.0, cache_dir="", extrapolation="default"):
     """Forces of the rail on the wheel of a registered tangential model.
 
     xi, eta [-], phi [1/m]: creepages; the patch from the semi-axes a, b [m] or
     the curvatures A, B [1/m] and the load Fz [N] (Hertz); material E [Pa],
     nu, mu; rolling speed V [m/s]; reduction: a preset ("elastic_fe", ...), one
-    factor k or (k11, k22, k23). Every argument may be an array; they broadcast.
+    factor k or (k11, k22, k23); extrapolation (model "mim"): "default" or
+    "richardson" (from grid N and N/2) or "none" (the grid's own forces, as
+    CONTACT). Every argument may be an array; they broadcast.
     Returns a dict of arrays: Fx, Fy [N], Mz [N m], valid (bool), iterations,
     stick_fraction (-1: unknown), the patch a, b [m] and p0 [Pa] (numbers when
     the patch data are scalars, else arrays); reason: per
@@ -92,7 +94,8 @@ def contact(model, xi=0.0, eta=0.0, phi=0.0, *, a=None, b=None, A=None, B=None, 
         raise InputError(f"contact: arrays of different lengths ({given}): give arrays of one length or scalars") \
             from None
     flat = [x.reshape(-1) if x.ndim == 1 else x.reshape(1) for x in arrays]
-    r = _railsim._contact_solve(model, curv, *flat, grid=grid, tolerance=tolerance, cache_dir=cache_dir)
+    r = _railsim._contact_solve(model, curv, *flat, grid=grid, tolerance=tolerance, cache_dir=cache_dir,
+                                extrapolation=extrapolation)
     if shape == ():
         for key in ("Fx", "Fy", "Mz", "stick_fraction"):
             r[key] = float(r[key][0])
@@ -114,7 +117,8 @@ def mim_fields(xi=0.0, eta=0.0, phi=0.0, *, a=None, b=None, A=None, B=None, Fz, 
 
     Returns x [m] (mx element centres), y [m] (my), pressure, px, py [Pa] as
     (my, mx) arrays, state (0 outside the contact, 1 adhesion, 2 slip), the
-    totals Fx, Fy, Fz [N], Mz [N m], counts and converged.
+    totals Fx, Fy, Fz [N], Mz [N m], counts and converged: the grid's own
+    solution (no extrapolation; contact(model="mim", extrapolation="none")).
     """
     curv, s1, s2 = _shape_args(a, b, A, B)
     return _railsim._mim_fields(s1, s2, curv, Fz, xi, eta, phi, E, nu, mu, grid=grid, tolerance=tolerance)

@@ -59,10 +59,17 @@ Column column(const Array& a, const char* name, py::ssize_t& n) {
 py::dict solve_arrays(const std::string& model_name, bool curvatures, const Array& xi, const Array& eta,
                       const Array& phi, const Array& s1, const Array& s2, const Array& fz, const Array& e,
                       const Array& nu, const Array& mu, const Array& v, const Array& k11, const Array& k22,
-                      const Array& k23, int grid, double tolerance, const std::string& cache_dir) {
+                      const Array& k23, int grid, double tolerance, const std::string& cache_dir,
+                      const std::string& extrapolation) {
   contact::TangentialModelOptions mo;
   mo.grid = grid;
   mo.tolerance = tolerance;
+  if (extrapolation == "none")
+    mo.extrapolation = contact::GridExtrapolation::None;
+  else if (extrapolation == "richardson")
+    mo.extrapolation = contact::GridExtrapolation::Richardson;
+  else if (extrapolation != "default")
+    throw InputError("contact: extrapolation must be 'default', 'none' or 'richardson' (got '" + extrapolation + "')");
   mo.cache_dir = cache_dir;
   const auto model = contact::make_tangential_model(model_name, mo);
   const auto ws = model->make_workspace();
@@ -219,7 +226,7 @@ void bind_contact(py::module_& m) {
   m.def("_contact_solve", &solve_arrays, py::arg("model"), py::arg("curvatures"), py::arg("xi"), py::arg("eta"),
         py::arg("phi"), py::arg("s1"), py::arg("s2"), py::arg("Fz"), py::arg("E"), py::arg("nu"), py::arg("mu"),
         py::arg("V"), py::arg("k11"), py::arg("k22"), py::arg("k23"), py::arg("grid") = 0,
-        py::arg("tolerance") = 0.0, py::arg("cache_dir") = "");
+        py::arg("tolerance") = 0.0, py::arg("cache_dir") = "", py::arg("extrapolation") = "default");
   m.def("_mim_fields", &mim_fields, py::arg("s1"), py::arg("s2"), py::arg("curvatures"), py::arg("Fz"),
         py::arg("xi"), py::arg("eta"), py::arg("phi"), py::arg("E"), py::arg("nu"), py::arg("mu"),
         py::arg("grid") = 0, py::arg("tolerance") = 0.0);

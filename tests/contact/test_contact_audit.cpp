@@ -22,7 +22,7 @@ using railsim::test::ReferenceState;
 namespace {
 // Every 25th state of the set (31 states: all families, patches and signs).
 std::vector<ReferenceState> sample() {
-  const auto all = load_reference_set("mim_grid60.csv");
+  const auto all = railsim::test::extrapolated_reference_set("mim_grid60.csv", "mim_grid30.csv");
   std::vector<ReferenceState> v;
   for (std::size_t i = 0; i < all.size(); i += 25) v.push_back(all[i]);
   return v;
@@ -48,7 +48,8 @@ TEST_CASE("contact audit: MIM reference, error statistics and models meeting a t
   CHECK_FALSE(r.audited.back());
   CHECK(std::isnan(r.errors[0].back()));
 
-  // The reference is the exact solution at grid 60 (the set's mim_grid60.csv).
+  // The reference is the exact solution at grid 60 (the registered mim:
+  // extrapolated from the set's mim_grid60.csv and mim_grid30.csv).
   for (std::size_t s = 0; s < set.size(); ++s) {
     INFO(set[s].id);
     CHECK(r.audited[s]);

@@ -29,11 +29,25 @@ TEST_CASE("model 'mim' is registered and matches the library call", "[mim][model
   MimOptions mo;
   mo.grid = 24;
   MimSolver s(mo);
-  const MimSolution& r = s.solve_hertz(in.patch, in.creep, in.material);
+  const MimSolution r = s.solve_hertz(in.patch, in.creep, in.material);
+  mo.grid = 12;
+  MimSolver half(mo);
+  const MimSolution& h = half.solve_hertz(in.patch, in.creep, in.material);
+  // Default: Richardson extrapolation 2 F_24 - F_12 (the fine grid's normal
+  // and tangential iterations start from the half grid's solution: equal to
+  // the solver tolerance).
   CHECK(f.valid);
-  CHECK(f.Fx == Approx(r.Fx).epsilon(1e-12));
-  CHECK(f.Fy == Approx(r.Fy).epsilon(1e-12));
-  CHECK(f.Mz == Approx(r.Mz).epsilon(1e-12));
+  CHECK(f.Fx == Approx(2.0 * r.Fx - h.Fx).epsilon(1e-6));
+  CHECK(f.Fy == Approx(2.0 * r.Fy - h.Fy).epsilon(1e-6));
+  CHECK(f.Mz == Approx(2.0 * r.Mz - h.Mz).epsilon(1e-6));
+  CHECK(std::abs(f.Fx - r.Fx) > 1e-4 * std::abs(r.Fx));  // it does extrapolate
+  // extrapolation None: the library call itself.
+  TangentialModelOptions plain = opt;
+  plain.extrapolation = GridExtrapolation::None;
+  const ContactForces p = make_tangential_model("mim", plain)->solve(in);
+  CHECK(p.Fx == Approx(r.Fx).epsilon(1e-12));
+  CHECK(p.Fy == Approx(r.Fy).epsilon(1e-12));
+  CHECK(p.Mz == Approx(r.Mz).epsilon(1e-12));
   CHECK(f.Fx < 0.0);  // positive creepage -> negative force
   CHECK(f.Fy > 0.0);  // negative lateral creepage -> positive force
   CHECK(f.stick_fraction > 0.0);
@@ -42,6 +56,10 @@ TEST_CASE("model 'mim' is registered and matches the library call", "[mim][model
   CHECK(model->solve(in, nullptr).Fx == Approx(f.Fx).epsilon(1e-12));
   opt.grid = 1;
   CHECK_THROWS_AS(make_tangential_model("mim", opt), railsim::InputError);
+  opt.grid = 6;  // the half grid would have 3 elements
+  CHECK_THROWS_AS(make_tangential_model("mim", opt), railsim::InputError);
+  plain.grid = 6;
+  CHECK(make_tangential_model("mim", plain)->solve(in).valid);
 }
 
 TEST_CASE("gap on a grid: a Hertzian gap reproduces the Hertzian call", "[mim][model]") {
