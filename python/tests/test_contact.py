@@ -122,6 +122,19 @@ def test_mim_fields_balance_the_totals_and_obey_coulomb():
     assert m["Fx"] == pytest.approx(r["Fx"], rel=1e-9) and m["Mz"] == pytest.approx(r["Mz"], rel=1e-9)
 
 
+def test_mim_extrapolation_choices():
+    # Default = Richardson from grid N and N/2 = 2 F_N - F_N/2 of the plain grids.
+    d = railsim.contact("mim", 1e-3, 5e-4, 0.3, **PATCH, grid=24)
+    r = railsim.contact("mim", 1e-3, 5e-4, 0.3, **PATCH, grid=24, extrapolation="richardson")
+    f = railsim.contact("mim", 1e-3, 5e-4, 0.3, **PATCH, grid=24, extrapolation="none")
+    h = railsim.contact("mim", 1e-3, 5e-4, 0.3, **PATCH, grid=12, extrapolation="none")
+    assert d["Fx"] == r["Fx"] and d["Fy"] == r["Fy"]
+    assert d["Fx"] == pytest.approx(2 * f["Fx"] - h["Fx"], rel=1e-6)
+    assert d["Fy"] == pytest.approx(2 * f["Fy"] - h["Fy"], rel=1e-6)
+    with pytest.raises(railsim.InputError, match="extrapolation must be"):
+        railsim.contact("mim", 1e-3, **PATCH, extrapolation="linear")
+
+
 def test_errors_are_python_exceptions_with_railsims_message():
     with pytest.raises(railsim.InputError, match="unknown.*(fastsim|known)"):
         railsim.contact("no_such_model", 1e-3, **PATCH)
