@@ -40,8 +40,7 @@ int run_contact(const ContactOptions& o) {
   contact::TangentialModelOptions mo;
   mo.grid = o.grid;
   mo.tolerance = o.tolerance;
-  if (o.extrapolation == "none") mo.extrapolation = contact::GridExtrapolation::None;
-  if (o.extrapolation == "richardson") mo.extrapolation = contact::GridExtrapolation::Richardson;
+  if (!o.extrapolation.empty()) mo.extrapolation = contact::grid_extrapolation_from_name(o.extrapolation, "--extrapolation");
   mo.cache_dir = o.cache_dir;
   const auto model = contact::make_tangential_model(o.model, mo);
   const auto ws = model->make_workspace();

@@ -110,6 +110,14 @@ const SaturationLawEntry& find_saturation_law(std::string_view name) {
 
 std::string tangential_model_names() { return names_of(tangential_models()); }
 
+GridExtrapolation grid_extrapolation_from_name(const std::string& name, const char* what) {
+  if (name == "default") return GridExtrapolation::Default;
+  if (name == "none") return GridExtrapolation::None;
+  if (name == "richardson") return GridExtrapolation::Richardson;
+  throw InputError(std::string(what) + ": extrapolation must be 'default', 'none' or 'richardson' (got '" + name +
+                   "')");
+}
+
 const TangentialModelEntry& find_tangential_model(std::string_view name) {
   return find_in(tangential_models(), name, "contact model", "models");
 }

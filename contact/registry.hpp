@@ -70,6 +70,9 @@ std::unique_ptr<TangentialModel> make_tangential_model(std::string_view name,
 
 // "linear, linear_sat, ..." for help texts and error messages.
 std::string tangential_model_names();
+// GridExtrapolation from its name ("default", "none", "richardson"); InputError
+// naming `what` (the option or key) and the allowed names otherwise.
+GridExtrapolation grid_extrapolation_from_name(const std::string& name, const char* what);
 
 struct LinearCoefficients;  // contact/linear_theory.hpp
 

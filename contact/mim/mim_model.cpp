@@ -272,7 +272,8 @@ class MimModel final : public TangentialModel {
     opt_.check();
     if (richardson_ && opt_.grid < 8)
       throw InputError("mim: Richardson extrapolation needs a grid of at least 8 elements across the minor axis "
-                       "(got " + std::to_string(opt_.grid) + "); use a finer grid or extrapolation none");
+                       "(got " + std::to_string(opt_.grid) + "); use a finer grid (--grid) or no extrapolation "
+                       "(--extrapolation none)");
     half_.grid = opt_.grid / 2;
   }
   std::string_view name() const override { return "mim"; }

@@ -64,12 +64,7 @@ py::dict solve_arrays(const std::string& model_name, bool curvatures, const Arra
   contact::TangentialModelOptions mo;
   mo.grid = grid;
   mo.tolerance = tolerance;
-  if (extrapolation == "none")
-    mo.extrapolation = contact::GridExtrapolation::None;
-  else if (extrapolation == "richardson")
-    mo.extrapolation = contact::GridExtrapolation::Richardson;
-  else if (extrapolation != "default")
-    throw InputError("contact: extrapolation must be 'default', 'none' or 'richardson' (got '" + extrapolation + "')");
+  mo.extrapolation = contact::grid_extrapolation_from_name(extrapolation, "contact");
   mo.cache_dir = cache_dir;
   const auto model = contact::make_tangential_model(model_name, mo);
   const auto ws = model->make_workspace();

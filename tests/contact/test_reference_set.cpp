@@ -5,6 +5,7 @@
 // Errors are |F - F_ref| / (mu Fz) of the tangential force vector.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -99,7 +100,7 @@ TEST_CASE("reference set: MIM grid convergence with spin, grid 60 against grid 1
   WARN("MIM without extrapolation, grid 60 vs 120, " << describe(plain));
   CHECK(plain.with_spin == 688);
   CHECK(plain.worst.at("lat_spin") > 0.004);  // the first-order error the extrapolation removes
-  CHECK(plain.above == 8);
+  CHECK(plain.above > 0);  // the plain grids miss the 0.3 %; the extrapolation below meets it
 
   // First order: halving the element size halves the difference (the premise
   // of the extrapolation), on the states where the grid matters.
@@ -215,9 +216,12 @@ TEST_CASE("deep slip with spin: FaStrip within 2 % of mu Fz for every sign combi
     const auto e = set_error(*make_tangential_model("fastrip"), set, [&](const ReferenceState& s) {
       return s.id.size() > 6 && s.id.compare(s.id.size() - 6, 6, signs) == 0;
     });
-    INFO(signs << ": " << e.max << " (" << e.worst << ")");
+    const auto n = std::count_if(set.begin(), set.end(), [&](const ReferenceState& s) {
+      return s.id.compare(s.id.size() - 6, 6, signs) == 0;
+    });
+    INFO(signs << ": " << e.max << " (" << e.worst << ") over " << n << " states");
+    CHECK(n == 12);  // 4 patches x 3 creepage levels
     CHECK(e.max < 0.02);
-    CHECK(e.mean > 0.0);
   }
   // The file is the live solver's (registered mim at grid 60).
   const auto mim = make_tangential_model("mim", {60, 1e-8, ""});

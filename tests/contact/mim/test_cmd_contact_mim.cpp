@@ -39,5 +39,11 @@ TEST_CASE("railsim contact --model mim reproduces CONTACT's creep curve point", 
   CHECK(std::abs(te.number(0, "Fx") - ref.number(k, "Fx_N")) > 1e-5 * std::abs(ref.number(k, "Fx_N")));
   CHECK(run_railsim("contact '" + cases + "' --model mim --grid 2 --out '" + out + "'").exit_code == 2);
   CHECK(run_railsim("contact '" + cases + "' --model mim --extrapolation linear --out '" + out + "'").exit_code == 2);
+  // The half grid of 6 would have 3 elements: refused naming both ways out; without extrapolation it runs.
+  const auto small = run_railsim("contact '" + cases + "' --model mim --grid 6 --out '" + out + "'");
+  CHECK(small.exit_code == 2);
+  CHECK(small.output.find("--grid") != std::string::npos);
+  CHECK(small.output.find("--extrapolation none") != std::string::npos);
+  CHECK(run_railsim("contact '" + cases + "' --model mim --grid 6 --extrapolation none --out '" + out + "'").exit_code == 0);
   CHECK(run_railsim("contact '" + cases + "' --model mim --tolerance 0.5 --out '" + out + "'").exit_code == 2);
 }
