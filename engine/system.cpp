@@ -247,7 +247,7 @@ std::string ModelOde::failure_message() const {
 
 void ModelOde::tolerances(const IntegratorOptions& o, double* atol) const {
   OdeSystem::tolerances(o, atol);
-  if (!(o.atol_contact_modes > 0.0) || model_.wheelset_model != WheelsetModel::full) return;
+  if (!(o.atol_contact_modes > 0.0)) return;
   for (const auto& w : model_.wheelsets) {
     const RigidBody& b = model_.bodies[w.body];
     for (int k : {kVert, kRoll})

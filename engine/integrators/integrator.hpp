@@ -42,10 +42,12 @@ struct IntegratorOptions {
                                // for undamped stiff modes (elastic contact without damping)
   bool stability_limit_detection = false;
   // Absolute tolerance of the states of the stiff wheel-rail contact modes
-  // (full wheelset model: the wheelsets' vertical and roll velocities and the
-  // spin perturbations) [m/s, rad/s]; 0 = atol. These modes (~250 Hz on the
-  // Hertz springs) carry no output a running-dynamics study reads; a looser
-  // tolerance lets the implicit methods step over them (OdeSystem::tolerances).
+  // (the wheelsets' spin perturbations in both wheelset models, and in the
+  // full model their vertical and roll velocities) [m/s, rad/s]; 0 = atol.
+  // The bounce modes (~250 Hz on the Hertz springs) carry no output a
+  // running-dynamics study reads, and 1e-4 rad/s of spin is a longitudinal
+  // creepage of r0 1e-4 / V (3.5e-7 at 120 m/s); a looser tolerance lets the
+  // implicit methods step over them (OdeSystem::tolerances).
   double atol_contact_modes = 0.0;  // cvode_bdf: CVODE's BDF stability limit detection (orders 3-5)
 };
 

@@ -34,6 +34,10 @@
 //                linear_solver: dense, max_steps: 100000, min_step: 1e-12}
 //                # max_step in (0, duration] (omit it for no limit); min_step below the output
 //                # interval and max_step
+//                max_order: 0, stability_limit_detection: false,  # cvode_bdf: BDF order cap, CVODE's
+//                # detection of the stability limit of orders 3-5 (lightly damped stiff modes)
+//                atol_contact_modes: 0   # [m/s, rad/s] atol of the wheelsets' spin perturbations and
+//                # (full model) vertical and roll velocities; 0 = atol (integrator.hpp)
 //   start_distance must lie on the track ([0, length]); |acceleration| <= 10 m/s^2;
 //   at most kMaxOutputSamples output samples; a key given twice is an error.
 //   start: equilibrium | nominal        # (quasi-)static state at t = 0 (default) or x = 0

@@ -2,10 +2,17 @@
 // stiff scene stops with a clear diagnostic.
 #include <catch2/catch.hpp>
 
+#include <yaml-cpp/yaml.h>
+
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "core/errors.hpp"
+#include "config/yaml_input.hpp"
+#include "engine/data.hpp"
 #include "engine/io/scenario.hpp"
+#include "engine/system.hpp"
 #include "engine/simulation.hpp"
 #include "engine/engine_test_support.hpp"
 #include "test_support.hpp"
@@ -16,7 +23,7 @@ namespace {
 std::vector<double> lateral_history(const engine::Scenario& sc, const engine::IntegratorOptions& o,
                                     engine::RunSummary* sum = nullptr) {
   std::vector<double> y;
-  const int qi = sc.model.bodies[0].q_index[engine::kLat];
+  const int qi = sc.model.bodies[sc.model.wheelsets[0].body].q_index[engine::kLat];
   auto s = engine::simulate(sc.model, o, sc.x0, sc.duration, sc.output_interval,
                             [&](double, const Eigen::VectorXd& x, const engine::Data&) { y.push_back(x[qi]); });
   if (sum) *sum = s;
@@ -127,4 +134,59 @@ TEST_CASE("Manchester coach on ERRI track: benchmark tolerances against a tight 
   INFO(sum.integrator << " rtol " << sc.integrator.rtol << ": max deviation " << err / peak * 100 << " % of peak "
                       << peak * 1e3 << " mm; steps " << sum.stats.steps << ", rhs calls " << sum.stats.rhs_calls);
   CHECK(err < 0.01 * peak);
+}
+
+// integrator.atol_contact_modes: the absolute tolerance of the wheelsets' spin
+// perturbations (both wheelset models) and of their vertical and roll
+// velocities (full model); every other state keeps atol. A run with the loose
+// contact-mode tolerance stays within 1 % of a tight reference.
+TEST_CASE("contact-mode tolerance reaches spin in both wheelset models, bounce in the full one", "[engine][integrator]") {
+  const std::string path = test::source_path("scenarios/cooperrider_car_dytsi.yaml");
+  for (const char* model : {"lateral", "full"}) {
+    INFO("wheelset model " << model);
+    YAML::Node node = YAML::LoadFile(path);
+    node["wheelset_model"] = model;
+    node["duration"] = 2.0;
+    const engine::Scenario sc = engine::load_scenario(config::InputNode(node, path, ""), test::source_path("scenarios"));
+    engine::Data data(sc.model);
+    engine::ModelOde ode(sc.model, data);
+    engine::IntegratorOptions o = sc.integrator;
+    o.atol_contact_modes = 1e-4;
+    std::vector<double> atol(std::size_t(ode.size()));
+    ode.tolerances(o, atol.data());
+    std::vector<bool> contact_mode(atol.size(), false);
+    for (const auto& w : sc.model.wheelsets) {
+      REQUIRE(w.beta_state >= 0);  // the axle rolls freely in both models
+      contact_mode[std::size_t(w.beta_state)] = true;
+      const auto& b = sc.model.bodies[w.body];
+      for (int k : {engine::kVert, engine::kRoll})
+        if (b.v_index[k] >= 0) {
+          CHECK(std::string(model) == "full");
+          contact_mode[std::size_t(b.v_index[k])] = true;
+        }
+    }
+    int loosened = 0;
+    for (std::size_t i = 0; i < atol.size(); ++i) {
+      INFO("state " << sc.model.state_names[i]);
+      CHECK(atol[i] == Approx(contact_mode[i] ? 1e-4 : o.atol));
+      loosened += contact_mode[i];
+    }
+    CHECK(loosened == (std::string(model) == "full" ? 12 : 4));  // 4 wheelsets x (spin [+ vertical, roll])
+
+    // Accuracy: leading wheelset's lateral motion over 2 s from the 5 mm start.
+    engine::IntegratorOptions tight = sc.integrator;
+    tight.rtol = 1e-9;
+    tight.atol = 1e-11;
+    const auto yref = lateral_history(sc, tight);
+    const auto y = lateral_history(sc, o);
+    REQUIRE(y.size() == yref.size());
+    double err = 0, peak = 0;
+    for (std::size_t i = 0; i < y.size(); ++i) {
+      err = std::max(err, std::abs(y[i] - yref[i]));
+      peak = std::max(peak, std::abs(yref[i]));
+    }
+    INFO("max deviation " << err / peak * 100 << " % of the peak " << peak * 1e3 << " mm");
+    CHECK(peak > 4e-3);
+    CHECK(err < 0.01 * peak);
+  }
 }
