@@ -100,15 +100,17 @@ void run_file(benchmark::State& state, const char* file, const char* wheelset_mo
   time_runs(state, sc, sc.integrator);
 }
 
-// The ERRI coach on the profiles geometry, one wheelset model and integrator.
-void run_profiles(benchmark::State& state, const char* wheelset_model, const char* method, double atol_contact_modes) {
+// The ERRI coach on the profiles geometry, one wheelset model and integrator;
+// max_step and atol_contact_modes 0: the scenario's.
+void run_profiles(benchmark::State& state, const char* wheelset_model, const char* method, double max_step,
+                  double atol_contact_modes) {
   using namespace railsim::engine;
   const auto path = scenario_path("manchester_coach_200_erri.yaml");
   YAML::Node node = YAML::LoadFile(path);
   node["wheelset_model"] = wheelset_model;
   node["contact"]["geometry"] = YAML::Load("{type: profiles, wheel: S1002, rail: UIC60, inclination: 1/40, r0: 0.46}");
   node["integrator"]["method"] = method;
-  if (std::string(method) == "cvode_bdf") node["integrator"]["max_step"] = 0.01;
+  if (max_step > 0) node["integrator"]["max_step"] = max_step;
   if (atol_contact_modes > 0) node["integrator"]["atol_contact_modes"] = atol_contact_modes;
   const Scenario sc = load_scenario(railsim::config::InputNode(node, path, ""),
                                     std::filesystem::path(path).parent_path().string());
@@ -138,17 +140,17 @@ BENCHMARK_CAPTURE(run_scene, manchester_200_lateral_cvode, "manchester_coach_200
     ->Unit(benchmark::kMillisecond)->Iterations(3);
 BENCHMARK_CAPTURE(run_scene, manchester_200_full_cvode, "manchester_coach_200_erri.yaml", "full", "cvode_bdf")
     ->Unit(benchmark::kMillisecond)->Iterations(1);
-BENCHMARK_CAPTURE(run_profiles, manchester_200_profiles_lateral_dopri5, "lateral", "odeint_dopri5", 0.0)
+BENCHMARK_CAPTURE(run_profiles, manchester_200_profiles_lateral_dopri5, "lateral", "odeint_dopri5", 0.0, 0.0)
     ->Unit(benchmark::kMillisecond)->Iterations(1);
-BENCHMARK_CAPTURE(run_profiles, manchester_200_profiles_lateral_cvode, "lateral", "cvode_bdf", 0.0)
+BENCHMARK_CAPTURE(run_profiles, manchester_200_profiles_lateral_cvode, "lateral", "cvode_bdf", 0.01, 0.0)
     ->Unit(benchmark::kMillisecond)->Iterations(1);
-BENCHMARK_CAPTURE(run_profiles, manchester_200_profiles_lateral_cvode_contact_modes, "lateral", "cvode_bdf", 1e-4)
+BENCHMARK_CAPTURE(run_profiles, manchester_200_profiles_lateral_cvode_contact_modes, "lateral", "cvode_bdf", 0.01, 1e-4)
     ->Unit(benchmark::kMillisecond)->Iterations(1);
-BENCHMARK_CAPTURE(run_profiles, manchester_200_profiles_full_dopri5, "full", "odeint_dopri5", 0.0)
+BENCHMARK_CAPTURE(run_profiles, manchester_200_profiles_full_dopri5, "full", "odeint_dopri5", 0.0, 0.0)
     ->Unit(benchmark::kMillisecond)->Iterations(1);
-BENCHMARK_CAPTURE(run_profiles, manchester_200_profiles_full_cvode, "full", "cvode_bdf", 0.0)
+BENCHMARK_CAPTURE(run_profiles, manchester_200_profiles_full_cvode, "full", "cvode_bdf", 0.01, 0.0)
     ->Unit(benchmark::kMillisecond)->Iterations(1);
-BENCHMARK_CAPTURE(run_profiles, manchester_200_profiles_full_cvode_contact_modes, "full", "cvode_bdf", 1e-4)
+BENCHMARK_CAPTURE(run_profiles, manchester_200_profiles_full_cvode_contact_modes, "full", "cvode_bdf", 0.01, 1e-4)
     ->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK_CAPTURE(run_scene, cooperrider_100_full_cvode, "cooperrider_car_100.yaml", "full", "cvode_bdf")
     ->Unit(benchmark::kMillisecond)->Iterations(1);

@@ -40,15 +40,16 @@ struct IntegratorOptions {
   std::string linear_solver = "auto";
   int max_order = 0;           // cvode_bdf: highest BDF order (1..5; 0 = 5). 2 keeps BDF A-stable
                                // for undamped stiff modes (elastic contact without damping)
-  bool stability_limit_detection = false;
+  bool stability_limit_detection = false;  // cvode_bdf: CVODE's BDF stability limit detection (orders 3-5)
   // Absolute tolerance of the states of the stiff wheel-rail contact modes
   // (the wheelsets' spin perturbations in both wheelset models, and in the
   // full model their vertical and roll velocities) [m/s, rad/s]; 0 = atol.
-  // The bounce modes (~250 Hz on the Hertz springs) carry no output a
-  // running-dynamics study reads, and 1e-4 rad/s of spin is a longitudinal
-  // creepage of r0 1e-4 / V (3.5e-7 at 120 m/s); a looser tolerance lets the
-  // implicit methods step over them (OdeSystem::tolerances).
-  double atol_contact_modes = 0.0;  // cvode_bdf: CVODE's BDF stability limit detection (orders 3-5)
+  // A looser tolerance lets the implicit methods step over these modes
+  // (OdeSystem::tolerances): 1e-4 rad/s of spin is a longitudinal creepage of
+  // r0 1e-4 / V (3.5e-7 at 120 m/s), but the bounce modes (~250 Hz on the
+  // Hertz springs) carry the wheel load: on vertically irregular track 1e-4
+  // m/s puts Q off by up to 19 % of its range (coach, ERRI, 200 km/h; README).
+  double atol_contact_modes = 0.0;
 };
 
 struct IntegratorStats {
