@@ -230,64 +230,33 @@ void loads_from_shares(const contact::StripSet& s, int jb, int je, const StripWo
 double strip_approach_for_load(const contact::StripSet& s, double Q, double phi_side, double Es, StripLoads& out,
                                PatchShape shape) {
   // Z(w) is increasing and convex-ish (0 while nothing is loaded); Newton from
-  // the smallest gap, guarded by bisection on a bracket. cos(delta_j) is
-  // computed once per strip, and only for strips that can be loaded.
+  // a Hertz guess, guarded by bisection on a bracket. The bracket and the
+  // iterations need only the vertical load and its derivative: they run on
+  // compact copies of the strips (the same arithmetic as shares() and
+  // loads_from_shares() with dphi = 0); the loads and patches are evaluated
+  // once, at the solution, on the strips that can be loaded there.
+  const int n = s.n;
   double cos_cache[contact::StripSet::kMax];
-  for (int j = 0; j < s.n; ++j) cos_cache[j] = std::numeric_limits<double>::quiet_NaN();
+  double cg[contact::StripSet::kMax], ck[contact::StripSet::kMax], cv[contact::StripSet::kMax],
+      cp[contact::StripSet::kMax];
+  bool linked[contact::StripSet::kMax];  // strips q and q+1 are neighbours
   double vmin = 1e9;  // vertical approach at which the first strip touches (g_j / cos >= g_j)
-  for (int j = 0; j < s.n; ++j)
-    if (s.s[j].gap < vmin) {
-      cos_cache[j] = cos_angle(s.s[j].angle);
-      vmin = std::min(vmin, s.s[j].gap / cos_cache[j]);
-    }
-  StripWork x;
-  int jb = 0, je = s.n;  // strips evaluated: all, then those that can be loaded below the bracket's top
-  auto evaluate = [&](double w, bool with_patches) {
-    shares(s, jb, je, w, 0.0, Es, cos_cache, x);
-    loads_from_shares(s, jb, je, x, phi_side, out, with_patches, shape);
-  };
-  double lo = vmin, hi = vmin + 1e-4;
-  for (int it = 0; it < 40; ++it) {  // grow the bracket until it carries Q
-    evaluate(hi, false);
-    if (out.vertical >= Q) break;
-    lo = hi;
-    hi = vmin + 2.0 * (hi - vmin);
-  }
-  // Below hi only strips with gap < hi can be loaded (p <= w - g): evaluate
-  // those and one neighbour on each side (the zero crossings).
-  {
-    int a = s.n, b = -1;
-    for (int j = 0; j < s.n; ++j)
-      if (s.s[j].gap < hi) {
-        a = std::min(a, j);
-        b = j;
-      }
-    if (b >= 0) {
-      jb = std::max(0, a - 1);
-      je = std::min(s.n, b + 2);
-    }
-  }
-  // The iterations need only the vertical load and its derivative: from
-  // compact copies of the strips in range (the same arithmetic as shares()
-  // and loads_from_shares() with dphi = 0).
-  const int nc = je - jb;
-  double cg[contact::StripSet::kMax], cc[contact::StripSet::kMax], ck[contact::StripSet::kMax],
-      cv[contact::StripSet::kMax], cp[contact::StripSet::kMax];
-  bool linked[contact::StripSet::kMax];  // strip jb+q and jb+q+1 are neighbours
-  for (int q = 0; q < nc; ++q) {
-    const contact::StripPoint& sp = s.s[jb + q];
-    if (std::isnan(cos_cache[jb + q])) cos_cache[jb + q] = cos_angle(sp.angle);
+  for (int q = 0; q < n; ++q) {
+    const contact::StripPoint& sp = s.s[q];
+    const double c = cos_angle(sp.angle);
+    cos_cache[q] = c;
     cg[q] = sp.gap;
-    cc[q] = cos_cache[jb + q];
     ck[q] = 0.5 * s.width * Es * sp.f;
-    cv[q] = phi_side == 0.0 ? cc[q] : std::cos(sp.angle + phi_side);
-    linked[q] = q + 1 < nc && s.s[jb + q + 1].index == sp.index + 1;
+    cv[q] = phi_side == 0.0 ? c : std::cos(sp.angle + phi_side);
+    linked[q] = q + 1 < n && s.s[q + 1].index == sp.index + 1;
+    if (sp.gap < vmin) vmin = std::min(vmin, sp.gap / c);  // gap / c >= gap
   }
+  const double* cc = cos_cache;
   auto vertical = [&](double w, double& V, double& dV) {
-    for (int q = 0; q < nc; ++q) cp[q] = w * cc[q] - cg[q];
+    for (int q = 0; q < n; ++q) cp[q] = w * cc[q] - cg[q];
     V = 0.0;
     dV = 0.0;
-    for (int q = 0; q + 1 < nc; ++q) {
+    for (int q = 0; q + 1 < n; ++q) {
       const double pa = cp[q], pb = cp[q + 1];
       if (!linked[q] || !(pa > 0.0 || pb > 0.0)) continue;
       if (pa > 0.0 && pb > 0.0) {
@@ -303,14 +272,23 @@ double strip_approach_for_load(const contact::StripSet& s, double Q, double phi_
       }
     }
   };
-  // First guess: Hertz's N ~ (w - vmin)^{3/2} through the bracket's top.
+  double lo = vmin, hi = vmin + 1e-4, Vhi = 0.0, dV = 0.0;
+  for (int it = 0; it < 40; ++it) {  // grow the bracket until it carries Q
+    vertical(hi, Vhi, dV);
+    if (Vhi >= Q) break;
+    lo = hi;
+    hi = vmin + 2.0 * (hi - vmin);
+  }
+  // First guess: Hertz's V = K (w - w0)^{3/2} through the bracket's top with
+  // its slope there (w0 = hi - 1.5 V / V'; w0 = vmin without a slope).
   double w = hi;
-  if (out.vertical > Q && out.vertical > 0.0) {
-    const double guess = vmin + (hi - vmin) * std::cbrt((Q / out.vertical) * (Q / out.vertical));
+  if (Vhi > Q && Vhi > 0.0) {
+    const double w0 = dV > 0.0 ? std::max(vmin, hi - 1.5 * Vhi / dV) : vmin;
+    const double guess = w0 + (hi - w0) * std::cbrt((Q / Vhi) * (Q / Vhi));
     if (guess > lo && guess < hi) w = guess;
   }
   for (int it = 0; it < 80; ++it) {
-    double V, dV;
+    double V;
     vertical(w, V, dV);
     const double f = V - Q;
     if (std::abs(f) <= 1e-10 * Q) break;
@@ -319,7 +297,24 @@ double strip_approach_for_load(const contact::StripSet& s, double Q, double phi_
     w = (next > lo && next < hi) ? next : 0.5 * (lo + hi);
     if (hi - lo < 1e-15) break;
   }
-  evaluate(w, true);
+  // Loads and patches at w: only strips with gap < w can be loaded (p <= w -
+  // g); those and one neighbour on each side (the zero crossings).
+  int jb = 0, je = n;
+  {
+    int a = n, b = -1;
+    for (int j = 0; j < n; ++j)
+      if (s.s[j].gap < w) {
+        a = std::min(a, j);
+        b = j;
+      }
+    if (b >= 0) {
+      jb = std::max(0, a - 1);
+      je = std::min(n, b + 2);
+    }
+  }
+  StripWork x;
+  shares(s, jb, je, w, 0.0, Es, cos_cache, x);
+  loads_from_shares(s, jb, je, x, phi_side, out, true, shape);
   return w;
 }
 
