@@ -22,7 +22,7 @@
 namespace railsim::contact {
 
 namespace {
-constexpr char kMagic[8] = {'R', 'S', 'S', 'T', 'R', 'P', '0', '3'};
+constexpr char kMagic[8] = {'R', 'S', 'S', 'T', 'R', 'P', '0', '4'};
 
 // Cubic Hermite basis on a cell of width h at t in [0, 1]: values
 // (h00 f_a + h10 f'_a + h01 f_b + h11 f'_b) and derivatives d/dy
@@ -253,10 +253,15 @@ StripContactTable StripContactTable::build(const WheelRailGeometry& g, const Str
         e.angle = r.angle[jj];
         e.dangle = limited(rl.angle[jj], r.angle[jj], rr.angle[jj]);
         e.lateral = r.lateral[jj];
+        e.dlateral = limited(rl.lateral[jj], r.lateral[jj], rr.lateral[jj]);
         e.lead = r.lead[jj];
+        e.dlead = limited(rl.lead[jj], r.lead[jj], rr.lead[jj]);
         e.height = r.height[jj];
+        e.dheight = limited(rl.height[jj], r.height[jj], rr.height[jj]);
         e.A = r.A[jj];
+        e.dA = limited(rl.A[jj], r.A[jj], rr.A[jj]);
         e.f = r.f[jj];
+        e.df = limited(rl.f[jj], r.f[jj], rr.f[jj]);
         t.entries_.push_back(e);
       }
     }
@@ -405,20 +410,20 @@ void StripContactTable::strips(double y, double psi, double cutoff, StripSet& ou
     sp.gap = vgap[q];
     sp.y_wheel = y_wheel_[std::size_t(j)];
     sp.angle = h00 * ea.angle + h10 * ea.dangle + h01 * eb.angle + h11 * eb.dangle;
-    sp.lateral = ea.lateral + t * (eb.lateral - ea.lateral);
-    const double lead0 = ea.lead + t * (eb.lead - ea.lead);
-    sp.height = ea.height + t * (eb.height - ea.height);
-    sp.A = ea.A + t * (eb.A - ea.A);
-    sp.f = ea.f + t * (eb.f - ea.f);
+    sp.lateral = h00 * ea.lateral + h10 * ea.dlateral + h01 * eb.lateral + h11 * eb.dlateral;
+    const double lead0 = h00 * ea.lead + h10 * ea.dlead + h01 * eb.lead + h11 * eb.dlead;
+    sp.height = h00 * ea.height + h10 * ea.dheight + h01 * eb.height + h11 * eb.dheight;
+    sp.A = h00 * ea.A + h10 * ea.dA + h01 * eb.A + h11 * eb.dA;
+    sp.f = h00 * ea.f + h10 * ea.df + h01 * eb.f + h11 * eb.df;
     if (two) {
       const Entry& fa = a1[q];
       const Entry& fb = b1[q];
       const double angle1 = h00 * fa.angle + h10 * fa.dangle + h01 * fb.angle + h11 * fb.dangle;
-      const double lateral1 = fa.lateral + t * (fb.lateral - fa.lateral);
-      const double lead1 = fa.lead + t * (fb.lead - fa.lead);
-      const double height1 = fa.height + t * (fb.height - fa.height);
-      const double A1 = fa.A + t * (fb.A - fa.A);
-      const double f1 = fa.f + t * (fb.f - fa.f);
+      const double lateral1 = h00 * fa.lateral + h10 * fa.dlateral + h01 * fb.lateral + h11 * fb.dlateral;
+      const double lead1 = h00 * fa.lead + h10 * fa.dlead + h01 * fb.lead + h11 * fb.dlead;
+      const double height1 = h00 * fa.height + h10 * fa.dheight + h01 * fb.height + h11 * fb.dheight;
+      const double A1 = h00 * fa.A + h10 * fa.dA + h01 * fb.A + h11 * fb.dA;
+      const double f1 = h00 * fa.f + h10 * fa.df + h01 * fb.f + h11 * fb.df;
       sp.angle += w * (angle1 - sp.angle);
       sp.lateral += w * (lateral1 - sp.lateral);
       sp.height += w * (height1 - sp.height);

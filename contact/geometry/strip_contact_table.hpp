@@ -30,10 +30,12 @@
 // Only strips whose gap stays below `gap_store` somewhere near a node are kept
 // (per row, with the rows and yaw nodes around it, so that interpolation
 // always sees both ends of a cell).
-// Interpolation: cubic Hermite in y for gap and angle (slopes by centred
+// Interpolation: cubic Hermite in y for every quantity (slopes by centred
 // differences, limited as Fritsch & Carlson 1980 so that a cell never
-// overshoots its rows: no negative gaps between rows), linear in y for the
-// others; between yaw nodes linear in psi^2 for
+// overshoots its rows: no negative gaps between rows, no cell-scale wiggle),
+// so that each is C1 in the shift (issue 13: the rolling radius, lateral
+// position, lead, A and f were linear in y before format 04, with slope jumps
+// at every 0.1 mm node); between yaw nodes linear in psi^2 for
 // the even quantities and in psi^2 for lead/psi (lead is odd in psi: the left
 // wheel at -psi is the fore-aft mirror of the left wheel at +psi, so the table
 // covers psi >= 0 and is C1 across psi = 0). The rigid pose (roll, axle
@@ -121,8 +123,8 @@ class StripContactTable {
   static void hertz_axis_factors(double B_over_A, double& alpha, double& beta);
 
  private:
-  struct Entry {  // one strip at one node
-    double gap, dgap, angle, dangle, lateral, lead, height, A, f;
+  struct Entry {  // one strip at one node: values and limited y-slopes
+    double gap, dgap, angle, dangle, lateral, dlateral, lead, dlead, height, dheight, A, dA, f, df;
   };
   struct Row {
     double roll, droll, z, dz;  // rigid pose and y-slopes

@@ -123,6 +123,59 @@ TEST_CASE("profile geometry: the strip table matches the exact search between it
   CHECK(checked >= 200);
 }
 
+// Every strip quantity is C1 in the shift (issue 13 item 1): at table nodes
+// the one-sided slopes (over 1/1000 of a cell) of the gap, angle, lateral
+// position, lead, height below the axle, longitudinal curvature and Winkler
+// factor agree to 2 % of the secants of the two cells that meet there, in
+// tread and flange-root contact and with yaw. Linear interpolation in y, as
+// the table had for the last five, jumps by the difference of the secants.
+TEST_CASE("profile geometry: every strip quantity has a continuous slope across table nodes", "[engine][geometry]") {
+  const ProfileGeometry& g = shared_geometry();
+  const double cell = g.table().grid().y_step, h = 1e-3 * cell;
+  const char* names[7] = {"gap", "angle", "lateral", "lead", "height", "A", "f"};
+  auto field = [](const contact::StripPoint& p, int f) {
+    const double v[7] = {p.gap, p.angle, p.lateral, p.lead, p.height, p.A, p.f};
+    return v[f];
+  };
+  auto find = [](const contact::StripSet& set, int index) -> const contact::StripPoint* {
+    for (int q = 0; q < set.n; ++q)
+      if (set.s[q].index == index) return &set.s[q];
+    return nullptr;
+  };
+  int checked = 0, jumping_secants = 0;
+  for (double node : {-0.0061, -0.0021, 0.0, 0.0013, 0.0047, 0.0060, 0.0063, 0.0072})
+    for (double yaw : {0.0, 0.0035, -0.012}) {
+      contact::StripSet at[5];  // node - cell, node - h, node, node + h, node + cell
+      const double ys[5] = {node - cell, node - h, node, node + h, node + cell};
+      for (int e = 0; e < 5; ++e) g.strips(ys[e], yaw, 0.5e-3, at[e]);
+      for (int j = 0; j < at[2].n; ++j) {
+        const contact::StripPoint& m = at[2].s[j];
+        if (m.gap > 0.2e-3) continue;
+        const contact::StripPoint* p[5] = {find(at[0], m.index), find(at[1], m.index), &m, find(at[3], m.index),
+                                           find(at[4], m.index)};
+        if (!p[0] || !p[1] || !p[3] || !p[4]) continue;
+        for (int f = 0; f < 7; ++f) {
+          const double secl = (field(m, f) - field(*p[0], f)) / cell, secr = (field(*p[4], f) - field(m, f)) / cell;
+          const double sl = (field(m, f) - field(*p[1], f)) / h, sr = (field(*p[3], f) - field(m, f)) / h;
+          const double scale = std::max(std::abs(secl), std::abs(secr));
+          if (!(scale > 0.0)) continue;
+          INFO("node " << node * 1e3 << " mm, yaw " << yaw * 1e3 << " mrad, strip " << m.index << ", " << names[f]
+                       << ": slopes " << sl << " / " << sr << ", cell secants " << secl << " / " << secr);
+          // plus the rounding of the values over h (heights are ~0.46 m)
+          const double rounding = 8e-16 * (std::abs(field(m, f)) + 1e-3) / h;
+          CHECK(std::abs(sr - sl) <= 0.02 * scale + rounding);
+          if (std::abs(secr - secl) > 0.02 * scale) ++jumping_secants;
+          ++checked;
+        }
+      }
+    }
+  // The test has teeth: at many of these points neighbouring secants differ by
+  // more than the tolerance, which a C0 interpolant would show as its jump.
+  INFO("checked " << checked << ", secants differing by > 2 %: " << jumping_secants);
+  CHECK(checked >= 300);
+  CHECK(jumping_secants >= 50);
+}
+
 // Mirror symmetry: the table holds the left wheel; the right wheel of the
 // exact search at (y, yaw) equals the left wheel's entry at (-y, -yaw).
 TEST_CASE("profile geometry: the right wheel at -y, -yaw mirrors the left wheel", "[engine][geometry]") {
