@@ -9,6 +9,7 @@ Data::Data(const Model& model)
       track(model.bodies.size()),
       vehicle_motion(model.bodies.size()),
       wheel(2 * model.wheelsets.size()),
+      rail(model.wheelsets.size()),
       patch(2 * model.wheelsets.size() * WheelGeometry::kMaxPoints),
       strips(2) {
   for (std::size_t i = 0; i < wheel.size(); ++i) workspace.push_back(model.coupling.make_workspace());

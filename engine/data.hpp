@@ -42,6 +42,14 @@ struct PatchState {
   double contact_angle = 0.0;  // [rad]
 };
 
+// The rails under one wheelset as its wheels see them (track_flexibility.hpp):
+// lateral position of the track (mean of the two rails) and each rail's
+// height, with their time rates. Track y to the left, z up [m, m/s].
+struct RailPosition {
+  double lateral = 0.0, lateral_rate = 0.0;
+  double vertical[2] = {0.0, 0.0}, vertical_rate[2] = {0.0, 0.0};  // left, right
+};
+
 struct Data {
   explicit Data(const Model& model);
 
@@ -54,6 +62,7 @@ struct Data {
   // two bodies act on.
   std::vector<BodyMotion> vehicle_motion;
   std::vector<WheelOutput> wheel;      // 2 per wheelset: left, right
+  std::vector<RailPosition> rail;      // per wheelset (rail_positions)
   // Off by default; simulate() sets it on its reporting Data only: then every
   // evaluation keeps each wheel's loaded patches (N > 1 N) in
   // patch[wheel * WheelGeometry::kMaxPoints + k], k < wheel[].patches.

@@ -68,6 +68,31 @@ Problem make_problem(const Model& model, bool hold_wheelsets = false) {
         p.state_weight[std::size_t(b.v_index[k])] = b.generalised_mass(k);
         p.state_weight[std::size_t(b.q_index[k])] = b.generalised_mass(k) / kPtcVelocityScale;
       }
+  // The flexible track under each wheelset (wheel_rail/track_flexibility.hpp):
+  // positions with the rows of their rates, like the bodies; held with the
+  // wheelsets.
+  const TrackFlexibility& tf = model.track_flexibility;
+  for (const auto& w : model.wheelsets) {
+    const std::pair<int, double> track[3] = {
+        {w.track_lateral_state, tf.lateral.mass},
+        {w.rail_vertical_state[0], tf.vertical.mass},
+        {w.rail_vertical_state[1], tf.vertical.mass}};
+    for (const auto& [q, mass] : track) {
+      if (q < 0) continue;
+      const std::size_t qi = std::size_t(q), vi = std::size_t(q) + 1;
+      is_velocity[vi] = 1;
+      if (hold_wheelsets) {
+        held[qi] = 1;
+        continue;
+      }
+      p.unknown.push_back(q);
+      p.equation.push_back(q + 1);
+      p.position.push_back(q);
+      p.weight.push_back(mass);
+      p.state_weight[vi] = mass;
+      p.state_weight[qi] = mass / kPtcVelocityScale;
+    }
+  }
   for (int i = 0; i < p.n; ++i) {
     bool listed = is_velocity[std::size_t(i)] != 0;
     for (int u : p.unknown) listed = listed || u == i;
@@ -123,6 +148,9 @@ EquilibriumResult newton_equilibrium(const Model& model, const Eigen::VectorXd& 
   for (const auto& b : model.bodies)  // at rest
     for (int k = 0; k < kNumDof; ++k)
       if (b.v_index[k] >= 0) r.x[b.v_index[k]] = 0.0;
+  for (const auto& w : model.wheelsets)  // the flexible track too
+    for (int q : {w.track_lateral_state, w.rail_vertical_state[0], w.rail_vertical_state[1]})
+      if (q >= 0) r.x[q + 1] = 0.0;
   Eigen::VectorXd f(n);
   std::vector<double> Jd(std::size_t(n) * std::size_t(n));
   double last_max = 0.0;  // max |acceleration| of the last evaluation

@@ -5,7 +5,9 @@
 //
 // State vector: per body, the positions of its active DOFs, then their
 // velocities, then (full wheelset model) the spin perturbation beta [rad/s];
-// after all bodies, one elongation state per yaw damper. All states are
+// after all bodies, one elongation state per yaw damper, then (flexible
+// track) per wheelset the track's lateral position and rate and per wheel the
+// rail's vertical position and rate. All states are
 // deviations from the static equilibrium on straight, level track (gravity is
 // balanced by spring preloads computed in finalize_model(), system.hpp).
 #pragma once
@@ -39,6 +41,32 @@ struct Wheelset {
   // static load (finalize_model; wheelset_contact.hpp) [m].
   double static_approach[2] = {0.0, 0.0};
   int beta_state = -1;                 // spin perturbation state (full model, or axle_rotation free)
+  // Flexible track (Model::track): the position state of the track's lateral
+  // mass under this wheelset and of each rail's vertical mass (-1: rigid); each
+  // is followed by its rate state.
+  int track_lateral_state = -1;
+  int rail_vertical_state[2] = {-1, -1};
+  double static_vertical_load[2] = {0.0, 0.0};  // Q0 per wheel [N] (finalize_model)
+};
+
+// One direction of the flexible track under a wheelset
+// (wheel_rail/track_flexibility.hpp): a mass on a spring and a damper to the
+// track geometry.
+struct TrackSupport {
+  bool active = false;
+  double mass = 0.0;       // [kg]
+  double stiffness = 0.0;  // [N/m]
+  double damping = 0.0;    // [N s/m]
+  // Vertical: bending stiffness EI of the rail [N m^2]; > 0: the rails follow
+  // the track's vertical geometry smoothed as a beam on an elastic
+  // foundation (track_flexibility.hpp), 0: exactly.
+  double bending_stiffness = 0.0;
+};
+class SmoothedRailGeometry;  // wheel_rail/track_flexibility.hpp
+struct TrackFlexibility {
+  TrackSupport lateral;   // per wheelset (both rails)
+  TrackSupport vertical;  // per rail under each wheel (full wheelset model)
+  std::shared_ptr<const SmoothedRailGeometry> vertical_geometry;  // with vertical.bending_stiffness > 0
 };
 
 // Speed V(t) = V0 + a t (a = 0: constant speed), distance s(t) = s0 + V0 t + a t^2 / 2.
@@ -63,6 +91,9 @@ struct Model {
   std::shared_ptr<const TrackReference> track;
   SpeedProfile speed;
   double max_lateral_shift = 0.0;  // run stops beyond (0: geometry range)
+  // Rails rigid (default) or on the lumped flexible track of
+  // wheel_rail/track_flexibility.hpp (scenario key track_flexibility).
+  TrackFlexibility track_flexibility;
   // Lateral wheelset model: wheelset roll follows the geometry quasi-statically
   // (phi = (r_L - r_R) / (a_L + a_R), rigid rails) when true; held at zero when
   // false (the textbook model of physics-reference §8.1).

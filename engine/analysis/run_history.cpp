@@ -142,7 +142,7 @@ void RunHistory::record(const Model& model, double t, const Eigen::VectorXd& x, 
     const int body = model.wheelsets[w].body;
     const RigidBody& b = model.bodies[body];
     const TrackSample& T = d.track[body];
-    h.y.push_back(x[b.q_index[kLat]] - 0.5 * (T.lat_left + T.lat_right));
+    h.y.push_back(x[b.q_index[kLat]] - d.rail[w].lateral);  // relative to the rails (flexible track: as deflected)
     h.y_absolute.push_back(x[b.q_index[kLat]]);
     h.yaw.push_back(x[b.q_index[kYaw]]);
     h.curvature.push_back(T.curvature);

@@ -18,8 +18,15 @@ JacobianPattern jacobian_pattern(const Model& model) {
       if (body.q_index[k] >= 0) group[b].push_back(body.q_index[k]);
       if (body.v_index[k] >= 0) group[b].push_back(body.v_index[k]);
     }
-    if (body.wheelset >= 0 && model.wheelsets[std::size_t(body.wheelset)].beta_state >= 0)
-      group[b].push_back(model.wheelsets[std::size_t(body.wheelset)].beta_state);
+    if (body.wheelset < 0) continue;
+    const Wheelset& ws = model.wheelsets[std::size_t(body.wheelset)];
+    if (ws.beta_state >= 0) group[b].push_back(ws.beta_state);
+    // The flexible track under the wheelset couples only to it (positions, rates).
+    for (int s : {ws.track_lateral_state, ws.rail_vertical_state[0], ws.rail_vertical_state[1]})
+      if (s >= 0) {
+        group[b].push_back(s);
+        group[b].push_back(s + 1);
+      }
   }
   std::vector<std::set<int>> linked(model.bodies.size() + model.yaw_dampers.size());
   for (std::size_t b = 0; b < model.bodies.size(); ++b) linked[b].insert(int(b));
@@ -50,6 +57,12 @@ JacobianPattern jacobian_pattern(const Model& model) {
       if (b.q_index[k] >= 0) {
         p.kinematic_row[std::size_t(b.q_index[k])] = 1;
         p.kinematic_col[std::size_t(b.q_index[k])] = b.v_index[k];
+      }
+  for (const auto& w : model.wheelsets)
+    for (int s : {w.track_lateral_state, w.rail_vertical_state[0], w.rail_vertical_state[1]})
+      if (s >= 0) {
+        p.kinematic_row[std::size_t(s)] = 1;
+        p.kinematic_col[std::size_t(s)] = s + 1;
       }
   // Columns: column j (state j of group g) reaches the rows of every group linked to g.
   p.colptr.assign(std::size_t(n) + 1, 0);

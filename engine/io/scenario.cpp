@@ -18,6 +18,7 @@
 #include "engine/wheel_rail/geometry_registry.hpp"
 #include "engine/wheel_rail/profile_geometry.hpp"
 #include "engine/wheel_rail/strip_patches.hpp"
+#include "engine/wheel_rail/track_flexibility.hpp"
 #include "engine/system.hpp"
 #include "engine/track_input.hpp"
 #include "engine/io/vehicle_file.hpp"
@@ -139,6 +140,40 @@ void read_wheelset_model(const InputNode& root, Model& m) {
   // Axle rotation (lateral model): free unless the scenario imposes V / r0.
   m.free_axle_rotation = root.choice_or("axle_rotation", "free", {"free", "imposed"}) == "free";
   if (root.has("max_lateral_shift")) m.max_lateral_shift = root.in_range("max_lateral_shift", 0.0, 0.2, true);
+}
+
+// Step: the flexible track under the wheelsets (wheel_rail/track_flexibility.hpp),
+// rigid rails when absent. Each direction {mass, stiffness, damping}.
+// The vertical part may name the rail's bending stiffness EI (N m^2): the
+// rails then follow the vertical geometry smoothed by their bending.
+void read_track_flexibility(const InputNode& root, double track_length, Model& m) {
+  const auto node = root.find("track_flexibility");
+  if (!node) return;
+  node->allow_only({"lateral", "vertical"});
+  auto support = [](const InputNode& n, TrackSupport& out, bool vertical) {
+    if (vertical) n.allow_only({"mass", "stiffness", "damping", "bending_stiffness"});
+    else n.allow_only({"mass", "stiffness", "damping"});
+    out.active = true;
+    out.mass = n.in_range("mass", 1.0, 1e5);              // kg: a rail's metre to a track panel
+    out.stiffness = n.in_range("stiffness", 1e5, 1e10);   // N/m
+    out.damping = n.in_range("damping", 0.0, 1e8);        // N s/m
+    if (vertical && n.has("bending_stiffness"))           // N m^2 (UIC60 vertical: 6.4e6)
+      out.bending_stiffness = n.in_range("bending_stiffness", 1e4, 1e9);
+  };
+  TrackFlexibility& tf = m.track_flexibility;
+  if (auto l = node->find("lateral")) support(*l, tf.lateral, false);
+  if (auto v = node->find("vertical")) support(*v, tf.vertical, true);
+  if (!tf.lateral.active && !tf.vertical.active)
+    node->fail("expected 'lateral' and/or 'vertical', each {mass, stiffness, damping}");
+  if (tf.vertical.bending_stiffness > 0.0 && m.wheelset_model == WheelsetModel::full) {  // (lateral model: no use)
+    const double beta = rail_foundation_beta(tf.vertical.stiffness, tf.vertical.bending_stiffness);
+    // The influence line spans 16 / beta: at most 1e6 grid points across it and the track.
+    if (!(16.0 / beta <= 1000.0))
+      node->at("vertical").at("bending_stiffness").fail(
+          "gives an influence line of " + config::format_number(16.0 / beta) + " m (16 / beta, beta = (stiffness / "
+          "8 EI)^(1/3)); expected at most 1000 m: lower bending_stiffness or raise stiffness");
+    tf.vertical_geometry = std::make_shared<const SmoothedRailGeometry>(*m.track, track_length, beta);
+  }
 }
 
 // The contact section as read, before the model is finalised (the Hertz
@@ -370,7 +405,7 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
   root.allow_only({"name", "description", "vehicle", "track", "speed", "speed_kmh", "acceleration", "start",
                    "start_distance", "duration", "output_interval", "wheelset_model", "max_lateral_shift",
                    "wheelset_roll", "axle_rotation", "contact", "integrator", "initial", "critical_speed",
-                   "running_safety"});
+                   "running_safety", "track_flexibility"});
   Scenario sc;
   sc.name = root.string_or("name", "");
   Model& m = sc.model;
@@ -379,6 +414,7 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
   m.track = std::make_shared<TrackInput>(track);
   read_motion(root, track->length(), sc);
   read_wheelset_model(root, m);
+  read_track_flexibility(root, track->length(), m);
   ContactSection contact = read_contact(root.at("contact"), base, sc);
   const ContactGeometry& geo = *contact.geometry;
   sc.geometry_description = geo.describe();

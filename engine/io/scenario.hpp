@@ -13,6 +13,12 @@
 //   wheelset_roll: kinematic | none      # lateral model (model.hpp)
 //   axle_rotation: free | imposed        # lateral model: beta a state, or Omega = V / r0 (model.hpp)
 //   max_lateral_shift: 0.05   # [m], optional (default: geometry range)
+//   track_flexibility:        # optional; rigid rails without it (engine/wheel_rail/track_flexibility.hpp)
+//     lateral: {mass: 370, stiffness: 5.5e7, damping: 7e4}   # per wheelset [kg, N/m, N s/m]
+//     vertical: {mass: 180, stiffness: 7.15e7, damping: 6e4,  # per rail under each wheel (full model)
+//                bending_stiffness: 6.38e6}                  # rail EI [N m^2], optional: the rails follow
+//                                       # the vertical geometry as a beam on its foundation
+//     # mass 1..1e5 kg, stiffness 1e5..1e10 N/m, damping 0..1e8 N s/m, bending_stiffness 1e4..1e9 N m^2
 //   contact:
 //     geometry: {type: conical, r0: 0.46, conicity: 0.2, l0: 0.75, contact_angle: 0,
 //                flange_clearance: 0.009, flange_stiffness: 1.5e7, max_shift: 0.05}

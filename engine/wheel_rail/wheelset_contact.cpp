@@ -146,7 +146,6 @@ bool distributed_loads(const Model& model, Data& d, int w, const WheelsetKinemat
   const Wheelset& ws = model.wheelsets[w];
   const ContactGeometry& geo = *ws.geometry;
   const BodyMotion& m = d.motion[ws.body];
-  const TrackSample& T = d.track[ws.body];
   const double Es = geo.contact_modulus();
   const contact::Material& mat = model.coupling.options().material;
   RigidPose ref;
@@ -156,8 +155,8 @@ bool distributed_loads(const Model& model, Data& d, int w, const WheelsetKinemat
     const double cn = model.coupling.options().normal_damping;
     for (int i = 0; i < 2; ++i) {
       const int side = i == 0 ? 1 : -1;
-      const double zr = i == 0 ? T.vert_left : T.vert_right;
-      const double dzr = i == 0 ? T.dvert_left : T.dvert_right;
+      const double zr = d.rail[std::size_t(w)].vertical[i];
+      const double zr_rate = d.rail[std::size_t(w)].vertical_rate[i];
       const double wi = ws.static_approach[i] - (m.q[kVert] - zr - ref.height);
       const double dphi = side * (k.phi - ref.roll);
       // Largest w - dphi a over the wheel's strips, a within l0 -+ kStripLateralReach.
@@ -166,7 +165,7 @@ bool distributed_loads(const Model& model, Data& d, int w, const WheelsetKinemat
       strip_loads(strips[i], wi, dphi, 0.0, Es, L, true, model.patch_shape);
       patches_to_points(L, mat, g[i], N[i]);
       if (cn > 0.0) {
-        const double rate0 = m.v[kVert] - d.V * dzr - ref.dheight_dy * k.ydot;
+        const double rate0 = m.v[kVert] - zr_rate - ref.dheight_dy * k.ydot;
         double Ntot = 0.0;
         for (int p = 0; p < g[i].n; ++p) Ntot += N[i][p];
         for (int p = 0; p < g[i].n; ++p) {
@@ -271,9 +270,8 @@ void wheelset_kinematics(const Model& model, Data& d, int w) {
   if (!model.kinematic_roll) return;
   const Wheelset& ws = model.wheelsets[w];
   BodyMotion& m = d.motion[ws.body];
-  const TrackSample& T = d.track[ws.body];
-  const double y = m.q[kLat] - 0.5 * (T.lat_left + T.lat_right);
-  const double ydot = m.v[kLat] - d.V * 0.5 * (T.dlat_left + T.dlat_right);
+  const double y = m.q[kLat] - d.rail[std::size_t(w)].lateral;
+  const double ydot = m.v[kLat] - d.rail[std::size_t(w)].lateral_rate;
   const ContactGeometry& geo = *ws.geometry;
   if (!(std::abs(y) < geo.max_shift())) return;  // wheelset_forces reports it
   RigidPose pose;
@@ -301,14 +299,13 @@ bool wheelset_forces(const Model& model, Data& d, int w, const double* x, double
   const ContactGeometry& geo = *ws.geometry;
   const bool full = model.wheelset_model == WheelsetModel::full;
 
-  const double ya = 0.5 * (T.lat_left + T.lat_right);
-  const double dya = 0.5 * (T.dlat_left + T.dlat_right);
+  const RailPosition& rail = d.rail[std::size_t(w)];
   WheelsetKinematics k;
   k.V = d.V;
   k.Omega = d.V / geo.r0() + (ws.beta_state >= 0 ? x[ws.beta_state] : 0.0);
   k.kappa = T.curvature;
-  k.y = m.q[kLat] - ya;
-  k.ydot = m.v[kLat] - d.V * dya;
+  k.y = m.q[kLat] - rail.lateral;
+  k.ydot = m.v[kLat] - rail.lateral_rate;
   k.psi = m.q[kYaw];
   k.psidot = m.v[kYaw];
   k.phi = m.q[kRoll];  // full: state; lateral: kinematic roll (0 when switched off)
@@ -340,10 +337,8 @@ bool wheelset_forces(const Model& model, Data& d, int w, const double* x, double
     if (!geo.reference_follows_shift()) geo.rigid_pose(k.y, k.psi, ref);
     for (int i = 0; i < 2; ++i) {
       const int side = i == 0 ? 1 : -1;
-      const double zr = i == 0 ? T.vert_left : T.vert_right;
-      const double dzr = i == 0 ? T.dvert_left : T.dvert_right;
-      const double dz0 = m.q[kVert] - zr - ref.height;
-      const double dz0_rate = m.v[kVert] - d.V * dzr - ref.dheight_dy * k.ydot;
+      const double dz0 = m.q[kVert] - rail.vertical[i] - ref.height;
+      const double dz0_rate = m.v[kVert] - rail.vertical_rate[i] - ref.dheight_dy * k.ydot;
       const double cn = model.coupling.options().normal_damping;
       for (int p = 0; p < g[i].n; ++p) {
         const ContactPointGeometry& c = g[i].p[p];
@@ -390,10 +385,8 @@ bool wheelset_forces(const Model& model, Data& d, int w, const double* x, double
   for (int i = 0; i < 2; ++i) {
     const int side = i == 0 ? 1 : -1;
     if (full) {
-      const double zr = i == 0 ? T.vert_left : T.vert_right;
-      const double dzr = i == 0 ? T.dvert_left : T.dvert_right;
-      k.z = m.q[kVert] - zr;
-      k.zdot = m.v[kVert] - d.V * dzr;
+      k.z = m.q[kVert] - rail.vertical[i];
+      k.zdot = m.v[kVert] - rail.vertical_rate[i];
     }
     WheelOutput& out = d.wheel[2 * w + i];
     out = WheelOutput{};

@@ -10,6 +10,7 @@
 
 #include "engine/analysis/run_history.hpp"
 #include "engine/analysis/run_safety.hpp"
+#include "engine/wheel_rail/track_flexibility.hpp"
 #include "engine/analysis/track_zones.hpp"
 #include "engine/io/scenario.hpp"
 #include "engine/simulation.hpp"
@@ -87,6 +88,7 @@ TEST_CASE("point accelerations: relative kinematics, track frame and gravity thr
   const int ws1 = m.wheelsets[0].body;
   x[m.bodies[ws1].q_index[kLat]] = 0.005;
   d.track[ws1].lat_left = d.track[ws1].lat_right = 0.002;
+  rail_positions(m, d, x.data());  // where the rails are, as the right-hand side finds them
   h.record(m, 0.0, x, d);
   CHECK(h.wheelsets[0].y.back() == Approx(0.003));
   CHECK(h.wheelsets[0].y_absolute.back() == Approx(0.005));
