@@ -88,6 +88,11 @@ std::vector<std::string> channel_names(const Model& model) {
       const std::string p = w.name + "." + side + ".";
       for (const char* q : {"Q", "Y", "Fx", "xi", "eta", "spin", "contact_y", "YQ", "Tgamma"}) c.push_back(p + q);
     }
+    // Flexible track (wheel_rail/track_flexibility.hpp): where the rails under
+    // the wheelset are, geometry plus deflection [m].
+    if (w.track_lateral_state >= 0) c.push_back(w.name + ".track_y");
+    for (int i = 0; i < 2; ++i)
+      if (w.rail_vertical_state[i] >= 0) c.push_back(w.name + (i == 0 ? ".L" : ".R") + ".rail_z");
   }
   return c;
 }
@@ -106,6 +111,10 @@ void channel_row(const Model& model, double t, const Eigen::VectorXd& x, const D
       const double yq = o.Q > 0.0 ? o.Y / o.Q : 0.0;  // lifted wheel: no meaningful Y/Q
       row.insert(row.end(), {o.Q, o.Y, o.Fx, o.creep.xi, o.creep.eta, o.creep.phi, o.contact_y, yq, wear_number(o)});
     }
+    const Wheelset& ws = model.wheelsets[w];
+    if (ws.track_lateral_state >= 0) row.push_back(d.rail[w].lateral);
+    for (int i = 0; i < 2; ++i)
+      if (ws.rail_vertical_state[i] >= 0) row.push_back(d.rail[w].vertical[i]);
   }
 }
 

@@ -39,7 +39,10 @@ RunSummary simulate(const Model& model, const IntegratorOptions& options, const 
 // Channel names of the standard output (channels.csv) and one row of values:
 // time, distance, speed; per wheelset <ws>.y, <ws>.yaw (relative to the
 // track); per wheel <ws>.<L|R>.Q, Y, Fx, xi, eta, spin, contact_y, YQ (Y/Q,
-// 0 for a lifted wheel), Tgamma (wear number, wear_number.hpp).
+// 0 for a lifted wheel), Tgamma (wear number, wear_number.hpp); with a
+// flexible track (wheel_rail/track_flexibility.hpp) also <ws>.track_y and
+// <ws>.<L|R>.rail_z, the rails' positions under the wheelset (geometry plus
+// deflection) [m].
 std::vector<std::string> channel_names(const Model& model);
 void channel_row(const Model& model, double t, const Eigen::VectorXd& x, const Data& d, std::vector<double>& row);
 

@@ -132,6 +132,20 @@ TEST_CASE("track flexibility: quasi-static deflections in a curve are force over
       Data d(m);
       Eigen::VectorXd xd(m.n_states);
       REQUIRE(rhs(m, d, 0.0, sc.x0.data(), xd.data()));
+      // The channels carry the rails' positions (here the deflections: the track is perfect).
+      const std::vector<std::string> names = channel_names(m);
+      std::vector<double> row;
+      channel_row(m, 0.0, sc.x0, d, row);
+      REQUIRE(row.size() == names.size());
+      auto column = [&](const std::string& name) {
+        const auto it = std::find(names.begin(), names.end(), name);
+        return it == names.end() ? -1 : int(it - names.begin());
+      };
+      REQUIRE(column("ws1.track_y") >= 0);
+      CHECK(row[std::size_t(column("ws1.track_y"))] == sc.x0[m.wheelsets[0].track_lateral_state]);
+      CHECK((column("ws1.R.rail_z") >= 0) == (std::string(model) == "full"));
+      if (column("ws1.R.rail_z") >= 0)
+        CHECK(row[std::size_t(column("ws1.R.rail_z"))] == sc.x0[m.wheelsets[0].rail_vertical_state[1]]);
       for (std::size_t w = 0; w < m.wheelsets.size(); ++w) {
         const Wheelset& ws = m.wheelsets[w];
         INFO(model << " model, curve " << (dir == 0 ? "right" : "left") << ", " << ws.name);
