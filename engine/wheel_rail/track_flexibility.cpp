@@ -14,7 +14,7 @@ double rail_foundation_beta(double stiffness, double bending_stiffness) {
 
 SmoothedRailGeometry::SmoothedRailGeometry(const TrackReference& track, double length, double beta, double step)
     : beta_(beta), h_(step), length_(length) {
-  const int n = int(std::floor(length / step)) + 1;
+  const int n = std::max(2, int(std::floor(length / step)) + 1);  // a cell at least
   std::vector<double> raw[2], raw_slope[2];
   TrackSample T;
   for (int i = 0; i < 2; ++i) {
@@ -59,7 +59,7 @@ SmoothedRailGeometry::SmoothedRailGeometry(const TrackReference& track, double l
 void SmoothedRailGeometry::at(double s, double z[2], double dz[2]) const {
   const int n = int(z_[0].size());
   const double u = std::clamp(s, 0.0, length_) / h_;
-  const int j = std::min(int(u), n - 2);
+  const int j = std::clamp(int(u), 0, n - 2);
   const double t = u - j, t2 = t * t, t3 = t2 * t;
   const double h00 = 2 * t3 - 3 * t2 + 1, h10 = (t3 - 2 * t2 + t) * h_, h01 = -2 * t3 + 3 * t2, h11 = (t3 - t2) * h_;
   const double d00 = (6 * t2 - 6 * t) / h_, d10 = 3 * t2 - 4 * t + 1, d11 = 3 * t2 - 2 * t;
