@@ -763,6 +763,24 @@ ScenarioRunResult run_scenario(const Scenario& sc, const ScenarioRunOptions& o) 
   choices.set("equivalent_conicity_3mm", sc.equivalent_conicity_3mm);
   choices.set("tangential", m.coupling.describe());
   choices.set("track", m.track->describe());
+  {  // rigid rails, or the flexible track (wheel_rail/track_flexibility.hpp) as used by this wheelset model
+    const TrackFlexibility& tf = m.track_flexibility;
+    results::Json flex = results::Json::object();
+    auto support = [](const TrackSupport& t) {
+      results::Json j = results::Json::object();
+      j.set("mass_kg", t.mass);
+      j.set("stiffness_N_per_m", t.stiffness);
+      j.set("damping_Ns_per_m", t.damping);
+      if (t.bending_stiffness > 0.0) j.set("rail_bending_stiffness_Nm2", t.bending_stiffness);
+      return j;
+    };
+    if (tf.lateral.active) flex.set("lateral", support(tf.lateral));
+    if (tf.vertical.active && m.wheelset_model == WheelsetModel::full) flex.set("vertical", support(tf.vertical));
+    if (tf.lateral.active || (tf.vertical.active && m.wheelset_model == WheelsetModel::full))
+      choices.set("track_flexibility", flex);
+    else
+      choices.set("track_flexibility", "rigid rails");
+  }
   choices.set("integrator", sc.integrator.method);
   choices.set("rtol", sc.integrator.rtol);
   choices.set("atol", sc.integrator.atol);
