@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "core/errors.hpp"
+#include "engine/analysis/critical_speed.hpp"
 #include "engine/analysis/run_history.hpp"
 #include "engine/analysis/run_safety.hpp"
 #include "engine/data.hpp"
@@ -267,4 +268,39 @@ TEST_CASE("track flexibility: bad input names the key and the range", "[engine][
   CHECK(mass.find("mass") != std::string::npos);
   const std::string nan = message("track_flexibility:\n  vertical: {mass: .nan, stiffness: 7e7, damping: 6e4}\n");
   CHECK(nan.find("mass") != std::string::npos);
+}
+
+// Stability: a lateral track of ballasted-track stiffness lowers the coach's
+// linear critical speed, and a track a hundred times stiffer gives the rigid
+// rails' within 0.5 % (the flexible model contains the rigid one as its
+// limit), in both wheelset models; likewise a very stiff vertical track in the
+// full model.
+TEST_CASE("track flexibility: linear critical speed below the rigid track's, the rigid one in the stiff limit",
+          "[engine][track][critical_speed]") {
+  const std::string base = read_text(test::source_path("scenarios/manchester_coach.yaml"));
+  auto with = [&](const std::string& model, const std::string& flex) {
+    std::string t = base;
+    t.replace(t.find("wheelset_model: lateral"), 23, "wheelset_model: " + model);
+    t.replace(t.find("vehicle: ../"), 12, "vehicle: ");
+    if (t.find("track: ../") != std::string::npos) t.replace(t.find("track: ../"), 10, "track: ");
+    return test::scenario_from_text(t + flex);
+  };
+  for (const std::string model : {"lateral", "full"}) {
+    const double rigid = linear_critical_speed(with(model, ""), 40.0, 150.0);
+    const double soft = linear_critical_speed(
+        with(model, "track_flexibility:\n  lateral: {mass: 370, stiffness: 5.5e7, damping: 7.0e4}\n"), 40.0, 150.0);
+    const double stiff = linear_critical_speed(
+        with(model, "track_flexibility:\n  lateral: {mass: 370, stiffness: 5.5e9, damping: 7.0e4}\n"), 40.0, 150.0);
+    INFO(model << " model: linear critical speed rigid " << rigid * 3.6 << ", lateral track 55 MN/m " << soft * 3.6
+                << ", 5.5 GN/m " << stiff * 3.6 << " km/h");
+    REQUIRE(std::isfinite(rigid));
+    CHECK(soft < 0.98 * rigid);
+    CHECK(stiff == Approx(rigid).epsilon(0.005));
+    if (model == "full") {
+      const double vstiff = linear_critical_speed(
+          with(model, "track_flexibility:\n  vertical: {mass: 180, stiffness: 7.15e9, damping: 6.0e4}\n"), 40.0, 150.0);
+      INFO("full model, vertical track 7.15 GN/m: " << vstiff * 3.6 << " km/h");
+      CHECK(vstiff == Approx(rigid).epsilon(0.005));
+    }
+  }
 }
