@@ -73,12 +73,11 @@ Problem make_problem(const Model& model, bool hold_wheelsets = false) {
   // wheelsets.
   const TrackFlexibility& tf = model.track_flexibility;
   for (const auto& w : model.wheelsets) {
-    const std::pair<int, double> track[3] = {
-        {w.track_lateral_state, tf.lateral.mass},
-        {w.rail_vertical_state[0], tf.vertical.mass},
-        {w.rail_vertical_state[1], tf.vertical.mass}};
-    for (const auto& [q, mass] : track) {
+    const auto track = w.track_states();
+    for (std::size_t k = 0; k < track.size(); ++k) {
+      const int q = track[k];
       if (q < 0) continue;
+      const double mass = k == 0 ? tf.lateral.mass : tf.vertical.mass;
       const std::size_t qi = std::size_t(q), vi = std::size_t(q) + 1;
       is_velocity[vi] = 1;
       if (hold_wheelsets) {
@@ -149,7 +148,7 @@ EquilibriumResult newton_equilibrium(const Model& model, const Eigen::VectorXd& 
     for (int k = 0; k < kNumDof; ++k)
       if (b.v_index[k] >= 0) r.x[b.v_index[k]] = 0.0;
   for (const auto& w : model.wheelsets)  // the flexible track too
-    for (int q : {w.track_lateral_state, w.rail_vertical_state[0], w.rail_vertical_state[1]})
+    for (int q : w.track_states())
       if (q >= 0) r.x[q + 1] = 0.0;
   Eigen::VectorXd f(n);
   std::vector<double> Jd(std::size_t(n) * std::size_t(n));

@@ -12,6 +12,7 @@
 // balanced by spring preloads computed in finalize_model(), system.hpp).
 #pragma once
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -47,6 +48,8 @@ struct Wheelset {
   int track_lateral_state = -1;
   int rail_vertical_state[2] = {-1, -1};
   double static_vertical_load[2] = {0.0, 0.0};  // Q0 per wheel [N] (finalize_model)
+  // The track's position states of this wheelset: lateral, left rail, right rail (-1 where rigid).
+  std::array<int, 3> track_states() const { return {track_lateral_state, rail_vertical_state[0], rail_vertical_state[1]}; }
 };
 
 // One direction of the flexible track under a wheelset

@@ -281,10 +281,11 @@ void ModelOde::tolerances(const IntegratorOptions& o, double* atol) const {
   // steps and 0.3 / 0.2 / 0.1 %.
   const TrackFlexibility& tf = model_.track_flexibility;
   for (const auto& w : model_.wheelsets) {
-    if (w.track_lateral_state >= 0)
-      atol[w.track_lateral_state + 1] = atol[w.track_lateral_state] * std::sqrt(tf.lateral.stiffness / tf.lateral.mass);
-    for (int s : {w.rail_vertical_state[0], w.rail_vertical_state[1]})
-      if (s >= 0) atol[s + 1] = atol[s] * std::sqrt(tf.vertical.stiffness / tf.vertical.mass);
+    const auto track = w.track_states();
+    for (std::size_t k = 0; k < track.size(); ++k) {
+      const TrackSupport& t = k == 0 ? tf.lateral : tf.vertical;
+      if (track[k] >= 0) atol[track[k] + 1] = atol[track[k]] * std::sqrt(t.stiffness / t.mass);
+    }
   }
   if (!(o.atol_contact_modes > 0.0)) return;
   for (const auto& w : model_.wheelsets) {

@@ -763,7 +763,7 @@ ScenarioRunResult run_scenario(const Scenario& sc, const ScenarioRunOptions& o) 
   choices.set("equivalent_conicity_3mm", sc.equivalent_conicity_3mm);
   choices.set("tangential", m.coupling.describe());
   choices.set("track", m.track->describe());
-  {  // rigid rails, or the flexible track (wheel_rail/track_flexibility.hpp) as used by this wheelset model
+  {  // rigid rails, or the flexible track (wheel_rail/track_flexibility.hpp): the parts that have states
     const TrackFlexibility& tf = m.track_flexibility;
     results::Json flex = results::Json::object();
     auto support = [](const TrackSupport& t) {
@@ -774,9 +774,11 @@ ScenarioRunResult run_scenario(const Scenario& sc, const ScenarioRunOptions& o) 
       if (t.bending_stiffness > 0.0) j.set("rail_bending_stiffness_Nm2", t.bending_stiffness);
       return j;
     };
-    if (tf.lateral.active) flex.set("lateral", support(tf.lateral));
-    if (tf.vertical.active && m.wheelset_model == WheelsetModel::full) flex.set("vertical", support(tf.vertical));
-    if (tf.lateral.active || (tf.vertical.active && m.wheelset_model == WheelsetModel::full))
+    const std::array<int, 3> states = m.wheelsets.empty() ? std::array<int, 3>{-1, -1, -1}
+                                                             : m.wheelsets.front().track_states();
+    if (states[0] >= 0) flex.set("lateral", support(tf.lateral));
+    if (states[1] >= 0) flex.set("vertical", support(tf.vertical));
+    if (states[0] >= 0 || states[1] >= 0)
       choices.set("track_flexibility", flex);
     else
       choices.set("track_flexibility", "rigid rails");

@@ -22,7 +22,7 @@ JacobianPattern jacobian_pattern(const Model& model) {
     const Wheelset& ws = model.wheelsets[std::size_t(body.wheelset)];
     if (ws.beta_state >= 0) group[b].push_back(ws.beta_state);
     // The flexible track under the wheelset couples only to it (positions, rates).
-    for (int s : {ws.track_lateral_state, ws.rail_vertical_state[0], ws.rail_vertical_state[1]})
+    for (int s : ws.track_states())
       if (s >= 0) {
         group[b].push_back(s);
         group[b].push_back(s + 1);
@@ -59,7 +59,7 @@ JacobianPattern jacobian_pattern(const Model& model) {
         p.kinematic_col[std::size_t(b.q_index[k])] = b.v_index[k];
       }
   for (const auto& w : model.wheelsets)
-    for (int s : {w.track_lateral_state, w.rail_vertical_state[0], w.rail_vertical_state[1]})
+    for (int s : w.track_states())
       if (s >= 0) {
         p.kinematic_row[std::size_t(s)] = 1;
         p.kinematic_col[std::size_t(s)] = s + 1;

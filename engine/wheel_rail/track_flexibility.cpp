@@ -72,17 +72,18 @@ void SmoothedRailGeometry::at(double s, double z[2], double dz[2]) const {
 }
 
 namespace {
-// Height and its d/ds of the support under rail i of a wheelset (its body's track sample at distance s_body).
-inline void support_height(const Model& model, const TrackSample& T, double s_body, int i, double& z, double& dz) {
+// Height and its d/ds of the support under both rails of wheelset w (left,
+// right): the rails' smoothed geometry, or the track sample of its body.
+inline void support_heights(const Model& model, const Data& d, const Wheelset& ws, double z[2], double dz[2]) {
   if (const auto& g = model.track_flexibility.vertical_geometry) {
-    double zz[2], dd[2];
-    g->at(s_body, zz, dd);
-    z = zz[i];
-    dz = dd[i];
+    g->at(d.s + model.bodies[std::size_t(ws.body)].position.x(), z, dz);
     return;
   }
-  z = i == 0 ? T.vert_left : T.vert_right;
-  dz = i == 0 ? T.dvert_left : T.dvert_right;
+  const TrackSample& T = d.track[std::size_t(ws.body)];
+  z[0] = T.vert_left;
+  z[1] = T.vert_right;
+  dz[0] = T.dvert_left;
+  dz[1] = T.dvert_right;
 }
 }  // namespace
 
@@ -98,17 +99,12 @@ void rail_positions(const Model& model, Data& d, const double* x) {
       r.lateral = 0.5 * (T.lat_left + T.lat_right);
       r.lateral_rate = d.V * 0.5 * (T.dlat_left + T.dlat_right);
     }
+    double z[2], dz[2];
+    support_heights(model, d, ws, z, dz);
     for (int i = 0; i < 2; ++i) {
       const int s = ws.rail_vertical_state[i];
-      if (s >= 0) {
-        r.vertical[i] = x[s];
-        r.vertical_rate[i] = x[s + 1];
-      } else {
-        double z, dz;
-        support_height(model, T, d.s + model.bodies[std::size_t(ws.body)].position.x(), i, z, dz);
-        r.vertical[i] = z;
-        r.vertical_rate[i] = d.V * dz;
-      }
+      r.vertical[i] = s >= 0 ? x[s] : z[i];
+      r.vertical_rate[i] = s >= 0 ? x[s + 1] : d.V * dz[i];
     }
   }
 }
@@ -124,15 +120,15 @@ void track_flexibility_rates(const Model& model, const Data& d, int w, const dou
     xdot[s] = x[s + 1];
     xdot[s + 1] = (-L.stiffness * (x[s] - ys) - L.damping * (x[s + 1] - ys_rate) - (wheel[0].Y + wheel[1].Y)) / L.mass;
   }
+  if (ws.rail_vertical_state[0] < 0 && ws.rail_vertical_state[1] < 0) return;
+  const TrackSupport& V = f.vertical;
+  double zs[2], dzs[2];
+  support_heights(model, d, ws, zs, dzs);
   for (int i = 0; i < 2; ++i) {
     const int s = ws.rail_vertical_state[i];
     if (s < 0) continue;
-    const TrackSupport& V = f.vertical;
-    double zs, dzs;
-    support_height(model, T, d.s + model.bodies[std::size_t(ws.body)].position.x(), i, zs, dzs);
-    const double zs_rate = d.V * dzs;
     xdot[s] = x[s + 1];
-    xdot[s + 1] = (-V.stiffness * (x[s] - zs) - V.damping * (x[s + 1] - zs_rate) -
+    xdot[s + 1] = (-V.stiffness * (x[s] - zs[i]) - V.damping * (x[s + 1] - d.V * dzs[i]) -
                    (wheel[i].Q - ws.static_vertical_load[i])) /
                   V.mass;
   }
