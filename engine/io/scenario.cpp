@@ -167,12 +167,19 @@ void read_track_flexibility(const InputNode& root, double track_length, Model& m
     node->fail("expected 'lateral' and/or 'vertical', each {mass, stiffness, damping}");
   if (tf.vertical.bending_stiffness > 0.0 && m.wheelset_model == WheelsetModel::full) {  // (lateral model: no use)
     const double beta = rail_foundation_beta(tf.vertical.stiffness, tf.vertical.bending_stiffness);
-    // The influence line spans 16 / beta: at most 1e6 grid points across it and the track.
-    if (!(16.0 / beta <= 1000.0))
+    // The smoothed rails are tabulated over the whole track: every 5 cm (or
+    // 0.1 / beta where that is finer: 60 rows per wavelength 2 pi / beta of
+    // the influence line), coarser on a long track so that the table keeps at
+    // most 1e6 rows (64 MB while it is built, about a second), as long as a
+    // row every 0.1 / beta is kept.
+    const double step = std::max(std::min(0.05, 0.1 / beta), track_length / 1e6);
+    if (!(beta * step <= 0.1))
       node->at("vertical").at("bending_stiffness").fail(
-          "gives an influence line of " + config::format_number(16.0 / beta) + " m (16 / beta, beta = (stiffness / "
-          "8 EI)^(1/3)); expected at most 1000 m: lower bending_stiffness or raise stiffness");
-    tf.vertical_geometry = std::make_shared<const SmoothedRailGeometry>(*m.track, track_length, beta);
+          "on a track of " + config::format_number(track_length) + " m the rails' bending table would have a row "
+          "every " + config::format_number(step) + " m, coarser than 0.1 / beta = " + config::format_number(0.1 / beta) +
+          " m (beta = (stiffness / 8 EI)^(1/3) = " + config::format_number(beta) + " 1/m); use a track of at most " +
+          config::format_number(1e6 * 0.1 / beta) + " m, or give no bending_stiffness");
+    tf.vertical_geometry = std::make_shared<const SmoothedRailGeometry>(*m.track, track_length, beta, step);
   }
 }
 

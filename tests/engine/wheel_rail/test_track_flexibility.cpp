@@ -270,6 +270,38 @@ TEST_CASE("track flexibility: bad input names the key and the range", "[engine][
   CHECK(nan.find("mass") != std::string::npos);
 }
 
+// The rails' bending table covers the whole track with at most 1e6 rows and a
+// row every 0.1 / beta: a track too long for both is refused before any table
+// is built, naming the key and the longest track allowed (beta = 1.12 1/m:
+// 89 km); a 20 km track is tabulated.
+TEST_CASE("track flexibility: the rails' bending table is bounded by the track length", "[engine][track][bad_input]") {
+  const std::string base = read_text(test::source_path("scenarios/manchester_coach.yaml"));
+  auto on_track = [&](int length) {
+    std::string t = base;
+    t.replace(t.find("wheelset_model: lateral"), 23, "wheelset_model: full");
+    t.replace(t.find("vehicle: ../"), 12, "vehicle: ");
+    t.replace(t.find("{type: straight, length: 600}"), 29, "{type: straight, length: " + std::to_string(length) + "}");
+    return test::scenario_from_text(t + "track_flexibility:\n  vertical: {mass: 180, stiffness: 7.15e7, damping: 6.0e4, "
+                                        "bending_stiffness: 6.38e6}\n");
+  };
+  std::string what = "no error";
+  try {
+    on_track(200000);
+  } catch (const InputError& e) {
+    what = e.what();
+  }
+  INFO(what);
+  CHECK(what.find("track_flexibility.vertical.bending_stiffness") != std::string::npos);
+  CHECK(what.find("200000 m") != std::string::npos);
+  CHECK(what.find("at most 89") != std::string::npos);
+  const Scenario sc = on_track(20000);
+  REQUIRE(sc.model.track_flexibility.vertical_geometry);
+  double z[2], dz[2];
+  sc.model.track_flexibility.vertical_geometry->at(19990.0, z, dz);
+  CHECK(z[0] == 0.0);  // the track has a lateral defect only: the rails lie level
+  CHECK(dz[1] == 0.0);
+}
+
 // Stability: a lateral track of ballasted-track stiffness lowers the coach's
 // linear critical speed, and a track a hundred times stiffer gives the rigid
 // rails' within 0.5 % (the flexible model contains the rigid one as its
