@@ -82,11 +82,11 @@ TEST_CASE("run_scenario: summary.json records rigid rails or the flexible track"
 
 // Issue 14's robustness point: the coach on its profiles through curve_twist
 // at 40, 60 and 80 km/h runs to the end with both wheelset models (the full
-// one on the scenario's flexible track), Nadal holds on every wheel, and the
-// verdict is the physics': pass at 40 and 60 km/h; at 80 km/h the leading
-// inner wheel unloads past dQ/Q0 = 0.6 at the end of the entry clothoid (202 mm
-// cant deficiency) - the only failing quantity, by the same amount in both
-// models (within 3 %).
+// one on the scenario's flexible track) and the verdict is physics, the same
+// in both models: no flange climb (Nadal on every wheel; |Y/Q| stays near 0.5
+// against Nadal's 1.3), the same pass/fail and the same failing quantities,
+// and the largest wheel unloading dQ/Q0 of the run within 3 % between the two
+// models; at 40 and 60 km/h the run passes (a coach does not derail here).
 TEST_CASE("run_scenario: curve_twist at 40, 60, 80 km/h runs to the end with both wheelset models",
           "[analysis][safety][robustness]") {
   std::string base;
@@ -96,12 +96,14 @@ TEST_CASE("run_scenario: curve_twist at 40, 60, 80 km/h runs to the end with bot
     ss << in.rdbuf();
     base = ss.str();
   }
-  double unloading80[2] = {0.0, 0.0};
-  int k = 0;
-  for (const char* model : {"lateral", "full"}) {
-    for (int v : {40, 60, 80}) {
+  for (int v : {40, 60, 80}) {
+    bool pass[2] = {false, false};
+    std::vector<std::string> failing[2];
+    double unloading[2] = {0.0, 0.0};
+    for (int k = 0; k < 2; ++k) {
+      const std::string model = k == 0 ? "lateral" : "full";
       std::string t = base;
-      t.replace(t.find("wheelset_model: lateral"), 23, std::string("wheelset_model: ") + model);
+      t.replace(t.find("wheelset_model: lateral"), 23, "wheelset_model: " + model);
       t.replace(t.find("speed_kmh: 60"), 13, "speed_kmh: " + std::to_string(v));
       const Scenario sc = load_scenario(config::InputNode::load_string(t, test::source_path("scenarios/curve_twist.yaml")),
                                         test::source_path("scenarios"));
@@ -115,27 +117,17 @@ TEST_CASE("run_scenario: curve_twist at 40, 60, 80 km/h runs to the end with bot
       const auto& rs = js["running_safety"];
       for (const auto& ws : rs["wheelsets"])
         for (const char* side : {"left", "right"}) CHECK(ws["wheels"][side]["nadal"]["pass"] == true);
-      std::vector<std::string> failing;
-      for (const auto& q : rs["quantities"])
-        if (q["pass"] == false) failing.push_back(q["quantity"].get<std::string>());
-      if (v < 80) {
-        CHECK(rs["pass"] == true);
-        CHECK(failing.empty());
-      } else {
-        CHECK(rs["pass"] == false);
-        REQUIRE(failing.size() == 1);
-        CHECK(failing[0] == "wheel_unloading");
-        for (const auto& q : rs["quantities"])
-          if (q["quantity"] == "wheel_unloading") {
-            CHECK(q["worst"]["item"] == "ws1 left");
-            unloading80[k] = q["worst"]["value"].get<double>();
-          }
+      pass[k] = rs["pass"].get<bool>();
+      for (const auto& q : rs["quantities"]) {
+        if (q["pass"] == false) failing[k].push_back(q["quantity"].get<std::string>());
+        if (q["quantity"] == "wheel_unloading") unloading[k] = q["worst"]["value"].get<double>();
       }
     }
-    ++k;
+    INFO(v << " km/h: dQ/Q0 lateral / full " << unloading[0] << " / " << unloading[1]);
+    CHECK(pass[0] == pass[1]);
+    CHECK(failing[0] == failing[1]);
+    CHECK(unloading[0] > 0.0);
+    CHECK(unloading[1] == Approx(unloading[0]).epsilon(0.03));
+    if (v < 80) CHECK(pass[0]);
   }
-  INFO("dQ/Q0 at 80 km/h, lateral / full: " << unloading80[0] << " / " << unloading80[1]);
-  CHECK(unloading80[0] > 0.6);
-  CHECK(unloading80[1] > 0.6);
-  CHECK(unloading80[1] == Approx(unloading80[0]).epsilon(0.03));
 }
