@@ -18,7 +18,8 @@
 //     vertical: {mass: 180, stiffness: 7.15e7, damping: 6e4,  # per rail under each wheel (full model)
 //                bending_stiffness: 6.38e6}                  # rail EI [N m^2], optional: the rails follow
 //                                       # the vertical geometry as a beam on its foundation
-//     # mass 1..1e5 kg, stiffness 1e5..1e10 N/m, damping 0..1e8 N s/m, bending_stiffness 1e4..1e9 N m^2
+//     # mass 1..1e5 kg, stiffness 1e5..1e10 N/m, damping 0..1e8 N s/m, bending_stiffness 1e4..1e9 N m^2;
+//     # with bending_stiffness the track is at most 1e5 / beta m long (beta = (stiffness / 8 EI)^(1/3))
 //   contact:
 //     geometry: {type: conical, r0: 0.46, conicity: 0.2, l0: 0.75, contact_angle: 0,
 //                flange_clearance: 0.009, flange_stiffness: 1.5e7, max_shift: 0.05}
