@@ -118,7 +118,7 @@ BENCHMARK(BM_StripsWithYaw);
 // The engine's whole normal-contact job per wheel and right-hand side on the
 // profiles geometry (engine/wheel_rail/wheelset_contact.cpp): the strips that can carry
 // load and the wheel's loads and patches. Lateral model: strips up to a
-// 0.3 mm gap, then the approach that carries the wheel load (40 kN, the
+// 0.2 mm gap (the engine's first fetch), then the approach that carries the wheel load (40 kN, the
 // coach's static wheel load); full model: strips up to the approach (0.05 mm
 // plus what a 0.1 mrad roll beyond the rigid pose adds) and the loads there.
 static const railsim::engine::ProfileGeometry& coach_geometry() {
@@ -148,7 +148,7 @@ static void BM_WheelNormalContactLateral(benchmark::State& state) {
   std::size_t i = 0;
   for (auto _ : state) {
     const auto& q = poses[i++ & 4095];
-    g.strips(q.first, q.second, 0.3e-3, s);
+    g.strips(q.first, q.second, 0.2e-3, s);
     const double w = railsim::engine::strip_approach_for_load(s, 4.0e4, 0.0, g.contact_modulus(), L);
     benchmark::DoNotOptimize(w);
   }
@@ -172,6 +172,30 @@ static void BM_WheelNormalContactFull(benchmark::State& state) {
   state.SetLabel("per wheel");
 }
 BENCHMARK(BM_WheelNormalContactFull);
+
+
+// The strips alone at the engine's cutoffs along the hunting-like path:
+// the lateral model's first fetch (0.2 mm) and the full model's reach
+// (0.15 mm); counter "strips" = strips returned per call.
+static void strips_on_path(benchmark::State& state, double cutoff) {
+  const auto& g = coach_geometry();
+  const auto poses = path_poses();
+  StripSet s;
+  std::size_t i = 0;
+  double n = 0.0;
+  for (auto _ : state) {
+    const auto& q = poses[i++ & 4095];
+    g.strips(q.first, q.second, cutoff, s);
+    n += s.n;
+    benchmark::DoNotOptimize(s.n);
+  }
+  state.counters["strips"] = n / double(state.iterations());
+  state.SetLabel("per wheel");
+}
+static void BM_StripsWithYawLateralCutoff(benchmark::State& state) { strips_on_path(state, 0.2e-3); }
+BENCHMARK(BM_StripsWithYawLateralCutoff);
+static void BM_StripsWithYawFullReach(benchmark::State& state) { strips_on_path(state, 0.15e-3); }
+BENCHMARK(BM_StripsWithYawFullReach);
 
 static void BM_RsgeoEvaluate(benchmark::State& state) {
   static const railsim::engine::GeometryTable g(std::string(RAILSIM_SOURCE_DIR) +

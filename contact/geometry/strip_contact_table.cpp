@@ -212,6 +212,7 @@ StripContactTable StripContactTable::build(const WheelRailGeometry& g, const Str
   // Stored ranges: strips with v < gap_store at this node or its neighbours in y and yaw.
   auto idx = [&](int k, int i) { return std::size_t(k) * std::size_t(t.ny_) + std::size_t(i); };
   t.rows_.resize(raw.size());
+  std::vector<Entry> entries;
   for (int k = 0; k < t.nk_; ++k)
     for (int i = 0; i < t.ny_; ++i) {
       int j0 = ns, j1 = -1;
@@ -235,7 +236,7 @@ StripContactTable StripContactTable::build(const WheelRailGeometry& g, const Str
       row.z = r.z - z0;
       row.droll = (rr.roll - rl.roll) / span;
       row.dz = (rr.z - rl.z) / span;
-      row.offset = t.entries_.size();
+      row.offset = entries.size();
       // Centred slope limited as Fritsch & Carlson: zero at a local extremum
       // of the rows, at most three times either secant.
       auto limited = [&](double fl, double f0, double fr) {
@@ -262,11 +263,33 @@ StripContactTable StripContactTable::build(const WheelRailGeometry& g, const Str
         e.dA = limited(rl.A[jj], r.A[jj], rr.A[jj]);
         e.f = r.f[jj];
         e.df = limited(rl.f[jj], r.f[jj], rr.f[jj]);
-        t.entries_.push_back(e);
+        entries.push_back(e);
       }
     }
-  t.index_near_ranges();
+  t.unpack(entries);
   return t;
+}
+
+void StripContactTable::unpack(const std::vector<Entry>& entries) {
+  gaps_.resize(entries.size());
+  values_.resize(entries.size());
+  for (std::size_t n = 0; n < entries.size(); ++n) {
+    const Entry& e = entries[n];
+    gaps_[n] = {e.gap, e.dgap};
+    values_[n] = {{e.angle, e.lateral, e.lead, e.height, e.A, e.f}, {e.dangle, e.dlateral, e.dlead, e.dheight, e.dA, e.df}};
+  }
+  index_near_ranges();
+}
+
+std::vector<StripContactTable::Entry> StripContactTable::pack() const {
+  std::vector<Entry> entries(gaps_.size());
+  for (std::size_t n = 0; n < entries.size(); ++n) {
+    const GapEntry& g = gaps_[n];
+    const Entry6& e = values_[n];
+    entries[n] = {g.gap,      g.dgap,      e.v[kAngle],  e.d[kAngle],  e.v[kLateral], e.d[kLateral], e.v[kLead],
+                  e.d[kLead], e.v[kHeight], e.d[kHeight], e.v[kA],      e.d[kA],       e.v[kF],       e.d[kF]};
+  }
+  return entries;
 }
 
 void StripContactTable::index_near_ranges() {
@@ -276,7 +299,7 @@ void StripContactTable::index_near_ranges() {
     for (int L = 0; L < kNearLevels; ++L) {
       NearRange& nr = near_[r * kNearLevels + std::size_t(L)];
       for (int j = row.j0; j <= row.j1; ++j)
-        if (entries_[row.offset + std::size_t(j - row.j0)].gap <= kNearGap[L]) {
+        if (gaps_[row.offset + std::size_t(j - row.j0)].gap <= kNearGap[L]) {
           if (nr.j1 < nr.j0) nr.j0 = j;
           nr.j1 = j;
         }
@@ -380,61 +403,54 @@ void StripContactTable::strips(double y, double psi, double cutoff, StripSet& ou
   out.width = grid_.strip;
   // Entries of strip j0 + q in the (up to) four rows: a (row i), b (row i+1)
   // at yaw node k (0) and k+1 (1).
-  auto base = [&](int kk, int ii) {
-    const Row& r = row(kk, ii);
-    return entries_.data() + r.offset + std::size_t(j0 - r.j0);
-  };
   const int m = std::min(j1 - j0 + 1, StripSet::kMax);
   if (m <= 0) return;
-  const Entry* a0 = base(k, i);
-  const Entry* b0 = base(k, i + 1);
-  const Entry* a1 = two ? base(k + 1, i) : a0;
-  const Entry* b1 = two ? base(k + 1, i + 1) : b0;
+  auto at = [&](int kk, int ii) { return row(kk, ii).offset + std::size_t(j0 - row(kk, ii).j0); };
+  const std::size_t ia0 = at(k, i), ib0 = at(k, i + 1);
+  const std::size_t ia1 = two ? at(k + 1, i) : ia0, ib1 = two ? at(k + 1, i + 1) : ib0;
   // Pass 1: gaps; pass 2 fills the strips near the loaded runs.
+  const GapEntry *ga0 = gaps_.data() + ia0, *gb0 = gaps_.data() + ib0;
+  const GapEntry *ga1 = gaps_.data() + ia1, *gb1 = gaps_.data() + ib1;
   double vgap[StripSet::kMax];
   for (int q = 0; q < m; ++q) {
-    double v = h00 * a0[q].gap + h10 * a0[q].dgap + h01 * b0[q].gap + h11 * b0[q].dgap;
-    if (two) v += w * (h00 * a1[q].gap + h10 * a1[q].dgap + h01 * b1[q].gap + h11 * b1[q].dgap - v);
+    double v = h00 * ga0[q].gap + h10 * ga0[q].dgap + h01 * gb0[q].gap + h11 * gb0[q].dgap;
+    if (two) v += w * (h00 * ga1[q].gap + h10 * ga1[q].dgap + h01 * gb1[q].gap + h11 * gb1[q].dgap - v);
     vgap[q] = std::max(0.0, v);
   }
   // lead / psi at the nodes (node 0 takes node 1's); at psi = 0 the lead is 0.
   const double inv_p0 = k > 0 ? 1.0 / p0 : 0.0, inv_p1 = nk_ > 1 ? 1.0 / p1 : 0.0;
+  const Entry6 *a0 = values_.data() + ia0, *b0 = values_.data() + ib0;
+  const Entry6 *a1 = values_.data() + ia1, *b1 = values_.data() + ib1;
   for (int q = 0; q < m; ++q) {
     const bool near = vgap[q] <= cutoff || (q > 0 && vgap[q - 1] <= cutoff) || (q + 1 < m && vgap[q + 1] <= cutoff);
     if (!near || out.n == StripSet::kMax) continue;
     const int j = j0 + q;
-    const Entry& ea = a0[q];
-    const Entry& eb = b0[q];
+    // The six quantities at node k (v0) and k + 1 (v1), as one vector each.
+    double v0[6], v1[6];
+    const Entry6& ea = a0[q];
+    const Entry6& eb = b0[q];
+    for (int l = 0; l < 6; ++l) v0[l] = h00 * ea.v[l] + h10 * ea.d[l] + h01 * eb.v[l] + h11 * eb.d[l];
     StripPoint& sp = out.s[out.n++];
     sp.index = j;
     sp.gap = vgap[q];
     sp.y_wheel = y_wheel_[std::size_t(j)];
-    sp.angle = h00 * ea.angle + h10 * ea.dangle + h01 * eb.angle + h11 * eb.dangle;
-    sp.lateral = h00 * ea.lateral + h10 * ea.dlateral + h01 * eb.lateral + h11 * eb.dlateral;
-    const double lead0 = h00 * ea.lead + h10 * ea.dlead + h01 * eb.lead + h11 * eb.dlead;
-    sp.height = h00 * ea.height + h10 * ea.dheight + h01 * eb.height + h11 * eb.dheight;
-    sp.A = h00 * ea.A + h10 * ea.dA + h01 * eb.A + h11 * eb.dA;
-    sp.f = h00 * ea.f + h10 * ea.df + h01 * eb.f + h11 * eb.df;
     if (two) {
-      const Entry& fa = a1[q];
-      const Entry& fb = b1[q];
-      const double angle1 = h00 * fa.angle + h10 * fa.dangle + h01 * fb.angle + h11 * fb.dangle;
-      const double lateral1 = h00 * fa.lateral + h10 * fa.dlateral + h01 * fb.lateral + h11 * fb.dlateral;
-      const double lead1 = h00 * fa.lead + h10 * fa.dlead + h01 * fb.lead + h11 * fb.dlead;
-      const double height1 = h00 * fa.height + h10 * fa.dheight + h01 * fb.height + h11 * fb.dheight;
-      const double A1 = h00 * fa.A + h10 * fa.dA + h01 * fb.A + h11 * fb.dA;
-      const double f1 = h00 * fa.f + h10 * fa.df + h01 * fb.f + h11 * fb.df;
-      sp.angle += w * (angle1 - sp.angle);
-      sp.lateral += w * (lateral1 - sp.lateral);
-      sp.height += w * (height1 - sp.height);
-      sp.A += w * (A1 - sp.A);
-      sp.f += w * (f1 - sp.f);
-      const double g1 = lead1 * inv_p1;
+      const Entry6& fa = a1[q];
+      const Entry6& fb = b1[q];
+      for (int l = 0; l < 6; ++l) v1[l] = h00 * fa.v[l] + h10 * fa.d[l] + h01 * fb.v[l] + h11 * fb.d[l];
+      const double lead0 = v0[kLead];
+      for (int l = 0; l < 6; ++l) v0[l] += w * (v1[l] - v0[l]);  // lead: below
+      const double g1 = v1[kLead] * inv_p1;
       const double g0 = k > 0 ? lead0 * inv_p0 : g1;
       sp.lead = sign * apsi * (g0 + w * (g1 - g0));
     } else {
-      sp.lead = sign * apsi * lead0 * inv_p0;  // at a node; 0 at psi = 0 (k = 0)
+      sp.lead = sign * apsi * v0[kLead] * inv_p0;  // at a node; 0 at psi = 0 (k = 0)
     }
+    sp.angle = v0[kAngle];
+    sp.lateral = v0[kLateral];
+    sp.height = v0[kHeight];
+    sp.A = v0[kA];
+    sp.f = v0[kF];
   }
 }
 
@@ -476,15 +492,15 @@ StripContactTable StripContactTable::cached(const WheelRailGeometry& geometry, c
         in.read(reinterpret_cast<char*>(t.y_wheel_.data()), std::streamsize(t.y_wheel_.size() * sizeof(double)));
         t.rows_.resize(std::size_t(t.ny_) * std::size_t(t.nk_));
         in.read(reinterpret_cast<char*>(t.rows_.data()), std::streamsize(t.rows_.size() * sizeof(Row)));
-        t.entries_.resize(std::size_t(hdr[3]));
-        in.read(reinterpret_cast<char*>(t.entries_.data()), std::streamsize(t.entries_.size() * sizeof(Entry)));
+        std::vector<Entry> entries(static_cast<std::size_t>(hdr[3]));
+        in.read(reinterpret_cast<char*>(entries.data()), std::streamsize(entries.size() * sizeof(Entry)));
         bool ok = bool(in) && in.peek() == std::char_traits<char>::eof();
         for (const Row& r : t.rows_)
           ok = ok && r.j0 >= 0 && r.j1 < t.strips_total_ && r.j1 >= r.j0 - 1 &&
-               r.offset + std::size_t(r.j1 - r.j0 + 1) <= t.entries_.size();
+               r.offset + std::size_t(r.j1 - r.j0 + 1) <= entries.size();
         if (ok) {
           if (loaded_from_cache) *loaded_from_cache = true;
-          t.index_near_ranges();
+          t.unpack(entries);
           return t;
         }
       }
@@ -494,15 +510,16 @@ StripContactTable StripContactTable::cached(const WheelRailGeometry& geometry, c
   // Best effort: an unwritable cache costs a rebuild next time, not a failure.
   try {
     const std::string folder = railsim::cache_dir(dir, "strip contact table");
+    const std::vector<Entry> entries = t.pack();
     write_file_atomically(folder + "/" + name, [&](std::ostream& out) {
-      const long long hdr[5] = {t.ny_, t.nk_, t.strips_total_, static_cast<long long>(t.entries_.size()), 0};
+      const long long hdr[5] = {t.ny_, t.nk_, t.strips_total_, static_cast<long long>(entries.size()), 0};
       out.write(kMagic, 8);
       out.write(reinterpret_cast<const char*>(&key), sizeof key);
       out.write(reinterpret_cast<const char*>(hdr), sizeof hdr);
       out.write(reinterpret_cast<const char*>(&t.t0_), sizeof t.t0_);
       out.write(reinterpret_cast<const char*>(t.y_wheel_.data()), std::streamsize(t.y_wheel_.size() * sizeof(double)));
       out.write(reinterpret_cast<const char*>(t.rows_.data()), std::streamsize(t.rows_.size() * sizeof(Row)));
-      out.write(reinterpret_cast<const char*>(t.entries_.data()), std::streamsize(t.entries_.size() * sizeof(Entry)));
+      out.write(reinterpret_cast<const char*>(entries.data()), std::streamsize(entries.size() * sizeof(Entry)));
     });
   } catch (const InputError&) {
   }

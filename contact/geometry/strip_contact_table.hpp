@@ -109,7 +109,7 @@ class StripContactTable {
   int strip_count() const { return strips_total_; }
   // Wheel-profile chord parameter of strip j (WheelRailGeometry::point_at).
   double strip_parameter(int j) const { return t0_ + j * grid_.strip; }
-  std::size_t stored_entries() const { return entries_.size(); }
+  std::size_t stored_entries() const { return gaps_.size(); }
 
   // Winkler modulus per unit E* for a relative-curvature ratio B/A (see header).
   static double winkler_factor(double B_over_A);
@@ -123,13 +123,26 @@ class StripContactTable {
   static void hertz_axis_factors(double B_over_A, double& alpha, double& beta);
 
  private:
-  struct Entry {  // one strip at one node: values and limited y-slopes
+  // One strip at one node: values and limited y-slopes, the cache file's
+  // record. In memory the gap and the other six quantities are held apart
+  // (GapEntry, Entry6: the gap pass reads only 16 bytes per strip and node; the
+  // six others are evaluated as one vector), see unpack().
+  struct Entry {
     double gap, dgap, angle, dangle, lateral, dlateral, lead, dlead, height, dheight, A, dA, f, df;
   };
+  struct GapEntry {
+    double gap, dgap;
+  };
+  static constexpr int kAngle = 0, kLateral = 1, kLead = 2, kHeight = 3, kA = 4, kF = 5;
+  struct alignas(16) Entry6 {
+    double v[6], d[6];  // values and y-slopes of angle, lateral, lead, height, A, f
+  };
+  void unpack(const std::vector<Entry>& entries);  // fills gaps_, values_ and the near ranges
+  std::vector<Entry> pack() const;                 // the file's records
   struct Row {
     double roll, droll, z, dz;  // rigid pose and y-slopes
     int j0 = 0, j1 = -1;        // stored strip range [j0, j1]
-    std::size_t offset = 0;     // into entries_
+    std::size_t offset = 0;     // into gaps_ and values_
   };
   const Row& row(int k, int i) const { return rows_[std::size_t(k) * std::size_t(ny_) + std::size_t(i)]; }
   // Per node and level L: the hull [j0, j1] of the strips whose gap at the
@@ -152,7 +165,8 @@ class StripContactTable {
   double t0_ = 0.0;  // chord parameter of strip 0
   std::vector<double> y_wheel_;  // per strip
   std::vector<Row> rows_;
-  std::vector<Entry> entries_;
+  std::vector<GapEntry> gaps_;
+  std::vector<Entry6> values_;
 };
 
 }  // namespace railsim::contact
