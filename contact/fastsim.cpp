@@ -82,28 +82,30 @@ StripGrid StripGrid::make(int nx, int ny, GridSpacing spacing_x, GridSpacing spa
   return g;
 }
 
-void blend_flexibilities(const ContactInput& in, const KalkerCoefficients& C, double& L1, double& L2, double& L3) {
-  const double a = in.patch.a, b = in.patch.b, c = std::sqrt(a * b);
-  const double G = in.material.shear_modulus();
-  const ReductionFactors& k = in.reduction;
+void blend_flexibilities(const ContactInput& in, double& L1, double& L2, double& L3) {
+  const double a = in.patch.a, b = in.patch.b;
   const double xi = in.creep.xi, eta = in.creep.eta, phi = in.creep.phi;
   // Combined flexibility: creepage-weighted harmonic mean, spin as the
   // equivalent creepage phi (3 pi a / 32) (the ratio of the spin and creepage
   // moments of FASTSIM's no-slip traction, pi a^2/4 over 8 a/3).
-  const double ph = phi * 3.0 * kPi * a / 32.0;
-  const double num = xi * xi + eta * eta + ph * ph;
-  const double den = xi * xi / L1 + eta * eta / L2 + ph * ph / L3;
+  const double ph = phi * (3.0 * kPi / 32.0) * a;
+  const double x2 = xi * xi, e2 = eta * eta, p2 = ph * ph;
+  const double num = x2 + e2 + p2;
+  const double L12 = L1 * L2;
+  const double den = x2 * L2 * L3 + e2 * L1 * L3 + p2 * L12;  // (x2/L1 + e2/L2 + p2/L3) L1 L2 L3
   if (!(num > 0.0) || !(den > 0.0)) return;
-  const double L = num / den;
+  const double L = num * L12 * L3 / den;
   // Blending weight: creepage over the saturation creepage, 0 -> 1 at 3 times it.
   // The saturation creepages are mu Fz / (G c^2 C11), mu Fz / (G c^2 C22),
-  // mu Fz / (G c^3 C23); CONTACT adds spin to xi and eta in rad/mm, so spin
-  // enters with the length unit 1 mm here too.
-  const double muN = in.material.mu * in.patch.Fz;
-  const double sx = muN / (G * c * c * C.C11 * k.k11), sy = muN / (G * c * c * C.C22 * k.k22);
-  const double sp = 1e-3 * muN / (G * c * c * c * C.C23 * k.k23);
-  const double f = std::sqrt((xi * xi + eta * eta + 1e-6 * phi * phi) / (sx * sx + sy * sy + sp * sp));
-  const double w = std::clamp(f / 3.0, 0.0, 1.0);
+  // mu Fz / (G c^3 C23) (c^2 = ab); CONTACT adds spin to xi and eta in rad/mm,
+  // so spin enters with the length unit 1 mm here too. From the flexibilities
+  // (G C11 = 8a / (3 L1), G c^3 C23 = 4 a^3 b / (pi L3)), times a^3 b:
+  // 3 mu Fz L1 a / 8, 3 mu Fz L2 a / 8, 1e-3 x 4 mu Fz L3 / pi (no division:
+  // the weight is the square root of one ratio).
+  const double M = in.material.mu * in.patch.Fz, a3b = a * a * a * b;
+  const double sx = 0.375 * M * L1 * a, sy = 0.375 * M * L2 * a, sp = (4e-3 / kPi) * M * L3;
+  const double r2 = (x2 + e2 + 1e-6 * phi * phi) * a3b * a3b, s2 = sx * sx + sy * sy + sp * sp;
+  const double w = r2 >= 9.0 * s2 ? 1.0 : std::sqrt(r2 / s2) * (1.0 / 3.0);
   L1 = (1.0 - w) * L1 + w * L;
   L2 = (1.0 - w) * L2 + w * L;
   L3 = (1.0 - w) * L3 + w * L;
@@ -170,7 +172,7 @@ ContactForces Fastsim::compute(const ContactInput& in, TangentialWorkspace* /*ws
   double L1 = 8.0 * a / (3.0 * G * C.C11 * in.reduction.k11);
   double L2 = 8.0 * a / (3.0 * G * C.C22 * in.reduction.k22);
   double L3 = kPi * a * std::sqrt(a / b) / (4.0 * G * C.C23 * in.reduction.k23);
-  if (options_.flexibility == FastsimFlexibility::blended) blend_flexibilities(in, C, L1, L2, L3);
+  if (options_.flexibility == FastsimFlexibility::blended) blend_flexibilities(in, L1, L2, L3);
   const double p0 = ((options_.bound == TractionBound::elliptic) ? 3.0 * Fz / (2.0 * kPi * a * b)
                                                                  : 2.0 * Fz / (kPi * a * b)) *
                     load_scale_;

@@ -173,10 +173,11 @@ class Fastsim final : public TangentialModel {
   double load_scale_ = 1.0;          // continuum load / discretised load of the pressure shape
 };
 
-// CONTACT's blend of Kalker's flexibilities (L1, L2, L3 in/out) towards one
-// combined flexibility at large creepage (Vollebregt & Voltr 2023).
-struct KalkerCoefficients;
-void blend_flexibilities(const ContactInput& in, const KalkerCoefficients& C, double& L1, double& L2, double& L3);
+// CONTACT's blend of Kalker's flexibilities (L1, L2, L3 in/out: Kalker's
+// 8a/(3 G C11), 8a/(3 G C22), pi a sqrt(a/b)/(4 G C23), with the reduction
+// factors) towards one combined flexibility at large creepage (Vollebregt &
+// Voltr 2023).
+void blend_flexibilities(const ContactInput& in, double& L1, double& L2, double& L3);
 
 // Checks shared by FASTSIM and FaStrip: returns false when there is no load
 // (Fz <= 0: zero forces), throws InputError naming `model` on non-finite or
