@@ -150,10 +150,10 @@ bool distributed_loads(const Model& model, Data& d, int w, const WheelsetKinemat
   const BodyMotion& m = d.motion[ws.body];
   const double Es = geo.contact_modulus();
   const contact::Material& mat = model.coupling.options().material;
-  RigidPose ref;
-  geo.rigid_pose(k.y, k.psi, ref);
   StripLoads L;
   if (model.wheelset_model == WheelsetModel::full) {
+    RigidPose ref;  // the approach and roll are measured from the rigid pose
+    geo.rigid_pose(k.y, k.psi, ref);
     const double cn = model.coupling.options().normal_damping;
     for (int i = 0; i < 2; ++i) {
       const int side = i == 0 ? 1 : -1;
