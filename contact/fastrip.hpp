@@ -142,7 +142,48 @@
 //    phi -1.5 10.0 % (limit 8 %; aob1/lat_spin/0/0.001/-1 Fy 0.458 against
 //    0.415 mu Fz, 4.3 %): not taken. Both (d) and (f) would need the strip
 //    theory's own slip pattern for a linear creepage beyond R = 1 (not
-//    derived here) instead of sliding from the leading edge.)
+//    derived here) instead of sliding from the leading edge.
+//    (f) rebuilt from this description reproduces its figures exactly. 2-D
+//    strip with a uniform plus linear creepage w0 + w1 x (traction-rate
+//    units, g = mu p0_j / a_j, the same on every strip), traction along one
+//    direction, slip zone of sign s = sign w0 at the trailing edge: the
+//    adhesion zone [2m - a_j, a_j] has its centre at m = |w0| / (g - s w1)
+//    and q = s g sqrt(a_j^2 - x^2) - (s g - w1) sqrt(a'^2 - (x - m)^2),
+//    a' = a_j - m (Carter for w1 = 0, the elliptic no-slip traction for
+//    w0 = 0; the slip in the slip zone is (s g - w1) sqrt((x - m)^2 - a'^2),
+//    of the right sign while s w1 < g; full slip from m = a_j). It holds for
+//    every aiding spin (s w1 > 0) but for opposing spin only while |w1| < g:
+//    beyond, the leading edge slides the other way. (g) that solution for the
+//    component of the elliptic spin slip along the strip's creepage
+//    direction (the rest elliptic and clipped as in (f)), on top of (f):
+//    14.66 / 2.29 % (10 x 10 15.5, 40 x 40 13.5, 80 x 80 12.0 %; worst
+//    aob1.33/lat_spin/0/0.01/-2, Fy -0.364 against -0.510 mu Fz, (f) 6.92 %:
+//    used beyond its range |w1| < g with opposing spin); live MIM circle eta
+//    0.001, phi -1 13.1 %, xi 0.002, eta 0.001, phi -1.5 10.7 %: not taken;
+//    (g') (g) for aiding spin only (s w1 >= 0, where it is exact; continuous
+//    with (f) at w1 = 0): 9.10 / 2.27 % (10 x 10 9.62, 40 x 40 8.17, 80 x 80
+//    8.29 %; lat_spin mean 2.37 -> 2.33 %, live MIM circle eta 0.001, phi 1
+//    2.89 -> 1.68 %, xi 0.002, eta 0.001, phi 1.5 3.30 -> 3.03 %), but the
+//    opposing cases are those of (f): eta 0.001, phi -1 12.4 %, xi 0.002,
+//    eta 0.001, phi -1.5 10.0 % (limit 8 %): not taken. What the opposing
+//    side needs, from a numerical solution of the 2-D strip (Kalker's
+//    discretisation, upwind displacement differences, 200 elements, active
+//    set; Carter and the elliptic no-slip traction reproduced to 0.6 %):
+//    with pure linear creepage beyond the bound (beta = w1 / g > 1) the
+//    strip does not slide as a whole: the leading 65 % slide with the sign
+//    of w1 x at once, then an adhesion zone, and a reversed slip zone grows
+//    from the trailing edge; the strip force over its full-slip force is
+//    beta up to 1, then 0.964 (beta 1.1), 0.934 (1.2), 0.856 (1.5), 0.754
+//    (2), 0.613 (3), and a uniform creepage still changes it (beta 1.2,
+//    alpha = w0 / (g a_j) = -0.1: 0.858, -0.3: 0.621; slope about 0.8 - 1.0
+//    against 2 in Carter's small-creepage limit), where (f) clips every
+//    strip to the bound and leaves the creepage almost without effect
+//    (circle, phi -1: MIM Fy 0.566 -> 0.418 mu Fz for eta 0 -> 0.001, (f)
+//    0.547 -> 0.470, the code now 0.535 -> 0.431). The three-zone solution
+//    has no closed form here (the transform of the sign change in the slip
+//    zones gives elliptic integrals); a table of the 2-D solution over
+//    (alpha, beta), built per grid, is the next candidate, but the vector
+//    case (longitudinal creepage with lateral spin) needs a third parameter.)
 // 5. Integration: the strip-theory traction is integrated analytically over
 //    each element (force and first moment), the spin correction by the
 //    midpoint rule at element centres; strips by the midpoint rule. The
