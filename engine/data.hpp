@@ -48,6 +48,10 @@ struct PatchState {
 struct RailPosition {
   double lateral = 0.0, lateral_rate = 0.0;
   double vertical[2] = {0.0, 0.0}, vertical_rate[2] = {0.0, 0.0};  // left, right
+  // Where the track's supports hold them (the geometry, smoothed by the rails'
+  // bending when they have it): what the flexible track's masses are sprung to.
+  double support_lateral = 0.0, support_lateral_rate = 0.0;
+  double support_vertical[2] = {0.0, 0.0}, support_vertical_rate[2] = {0.0, 0.0};
 };
 
 struct Data {

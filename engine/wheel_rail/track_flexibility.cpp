@@ -92,19 +92,18 @@ void rail_positions(const Model& model, Data& d, const double* x) {
     const Wheelset& ws = model.wheelsets[w];
     const TrackSample& T = d.track[std::size_t(ws.body)];
     RailPosition& r = d.rail[w];
-    if (ws.track_lateral_state >= 0) {
-      r.lateral = x[ws.track_lateral_state];
-      r.lateral_rate = x[ws.track_lateral_state + 1];
-    } else {
-      r.lateral = 0.5 * (T.lat_left + T.lat_right);
-      r.lateral_rate = d.V * 0.5 * (T.dlat_left + T.dlat_right);
-    }
-    double z[2], dz[2];
-    support_heights(model, d, ws, z, dz);
+    r.support_lateral = 0.5 * (T.lat_left + T.lat_right);
+    r.support_lateral_rate = d.V * 0.5 * (T.dlat_left + T.dlat_right);
+    const bool lateral_state = ws.track_lateral_state >= 0;
+    r.lateral = lateral_state ? x[ws.track_lateral_state] : r.support_lateral;
+    r.lateral_rate = lateral_state ? x[ws.track_lateral_state + 1] : r.support_lateral_rate;
+    double dz[2];
+    support_heights(model, d, ws, r.support_vertical, dz);
     for (int i = 0; i < 2; ++i) {
+      r.support_vertical_rate[i] = d.V * dz[i];
       const int s = ws.rail_vertical_state[i];
-      r.vertical[i] = s >= 0 ? x[s] : z[i];
-      r.vertical_rate[i] = s >= 0 ? x[s + 1] : d.V * dz[i];
+      r.vertical[i] = s >= 0 ? x[s] : r.support_vertical[i];
+      r.vertical_rate[i] = s >= 0 ? x[s + 1] : r.support_vertical_rate[i];
     }
   }
 }
@@ -112,23 +111,21 @@ void rail_positions(const Model& model, Data& d, const double* x) {
 void track_flexibility_rates(const Model& model, const Data& d, int w, const double* x, double* xdot) {
   const Wheelset& ws = model.wheelsets[std::size_t(w)];
   const TrackFlexibility& f = model.track_flexibility;
-  const TrackSample& T = d.track[std::size_t(ws.body)];
+  const RailPosition& r = d.rail[std::size_t(w)];  // rail_positions of this evaluation
   const WheelOutput* wheel = &d.wheel[2 * std::size_t(w)];
   if (const int s = ws.track_lateral_state; s >= 0) {
     const TrackSupport& L = f.lateral;
-    const double ys = 0.5 * (T.lat_left + T.lat_right), ys_rate = d.V * 0.5 * (T.dlat_left + T.dlat_right);
     xdot[s] = x[s + 1];
-    xdot[s + 1] = (-L.stiffness * (x[s] - ys) - L.damping * (x[s + 1] - ys_rate) - (wheel[0].Y + wheel[1].Y)) / L.mass;
+    xdot[s + 1] = (-L.stiffness * (x[s] - r.support_lateral) - L.damping * (x[s + 1] - r.support_lateral_rate) -
+                   (wheel[0].Y + wheel[1].Y)) /
+                  L.mass;
   }
-  if (ws.rail_vertical_state[0] < 0 && ws.rail_vertical_state[1] < 0) return;
   const TrackSupport& V = f.vertical;
-  double zs[2], dzs[2];
-  support_heights(model, d, ws, zs, dzs);
   for (int i = 0; i < 2; ++i) {
     const int s = ws.rail_vertical_state[i];
     if (s < 0) continue;
     xdot[s] = x[s + 1];
-    xdot[s + 1] = (-V.stiffness * (x[s] - zs[i]) - V.damping * (x[s + 1] - d.V * dzs[i]) -
+    xdot[s + 1] = (-V.stiffness * (x[s] - r.support_vertical[i]) - V.damping * (x[s + 1] - r.support_vertical_rate[i]) -
                    (wheel[i].Q - ws.static_vertical_load[i])) /
                   V.mass;
   }

@@ -75,12 +75,13 @@ class SmoothedRailGeometry {
 // beta of the rail on its foundation from the lumped vertical stiffness and EI.
 double rail_foundation_beta(double stiffness, double bending_stiffness);
 
-// Where the rails of wheelset w are (Data::rail): from the track geometry
-// (rigid track) or from the track states.
+// Where the rails of every wheelset are (Data::rail): from the track geometry
+// (rigid track) or from the track states; and where their supports hold them.
 void rail_positions(const Model& model, Data& d, const double* x);
 
 // The track states' derivatives of wheelset w, once its wheel forces are in
-// Data::wheel (after wheelset_forces).
+// Data::wheel (after wheelset_forces) and Data::rail is this evaluation's
+// (after rail_positions).
 void track_flexibility_rates(const Model& model, const Data& d, int w, const double* x, double* xdot);
 
 }  // namespace railsim::engine
