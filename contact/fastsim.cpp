@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <type_traits>
 
 #include "contact/kalker_coefficients.hpp"
 #include "core/errors.hpp"
@@ -82,7 +83,10 @@ StripGrid StripGrid::make(int nx, int ny, GridSpacing spacing_x, GridSpacing spa
   return g;
 }
 
-void blend_flexibilities(const ContactInput& in, double& L1, double& L2, double& L3) {
+namespace {
+// blend_flexibilities, inlined into Fastsim::compute (its divisions and
+// square root then overlap the caller's).
+inline void blend(const ContactInput& in, double& L1, double& L2, double& L3) {
   const double a = in.patch.a, b = in.patch.b;
   const double xi = in.creep.xi, eta = in.creep.eta, phi = in.creep.phi;
   // Combined flexibility: creepage-weighted harmonic mean, spin as the
@@ -110,6 +114,9 @@ void blend_flexibilities(const ContactInput& in, double& L1, double& L2, double&
   L2 = (1.0 - w) * L2 + w * L;
   L3 = (1.0 - w) * L3 + w * L;
 }
+}  // namespace
+
+void blend_flexibilities(const ContactInput& in, double& L1, double& L2, double& L3) { blend(in, L1, L2, L3); }
 
 bool check_tangential_input(const ContactInput& in, const char* model) {
   const HertzPatch& p = in.patch;
@@ -172,7 +179,7 @@ ContactForces Fastsim::compute(const ContactInput& in, TangentialWorkspace* /*ws
   double L1 = 8.0 * a / (3.0 * G * C.C11 * in.reduction.k11);
   double L2 = 8.0 * a / (3.0 * G * C.C22 * in.reduction.k22);
   double L3 = kPi * a * std::sqrt(a / b) / (4.0 * G * C.C23 * in.reduction.k23);
-  if (options_.flexibility == FastsimFlexibility::blended) blend_flexibilities(in, L1, L2, L3);
+  if (options_.flexibility == FastsimFlexibility::blended) blend(in, L1, L2, L3);
   const double p0 = ((options_.bound == TractionBound::elliptic) ? 3.0 * Fz / (2.0 * kPi * a * b)
                                                                  : 2.0 * Fz / (kPi * a * b)) *
                     load_scale_;
@@ -182,34 +189,66 @@ ContactForces Fastsim::compute(const ContactInput& in, TangentialWorkspace* /*ws
   const double sp = in.creep.phi / L3;   // from spin, per metre of lever arm [Pa/m^2]
 
   const auto nx = static_cast<std::size_t>(grid_.nx);
+  const auto ny = static_cast<std::size_t>(grid_.ny);
   const double* step = grid_.step.data();
   const double* step_mid = grid_.step_mid.data();
   const double* dX = grid_.dX.data();
   const double* centre_dX = grid_.centre_dX.data();
-  const StripSums sums = grid_.sum_strips(a, b, [&](std::size_t j, double y, double aj) {
-    // Per step (normalised by a_j): px -= (xi - phi y)/L1 dx, py -= (eta/L2 + phi x/L3) dx.
-    const double cx = (sx - sp * y) * aj, cy = sy * aj, cp = sp * aj * aj;
-    const double* bnd = &bound_shape_[j * nx];
-    double px = 0.0, py = 0.0;
-    double fx = 0.0, fy = 0.0, mz = 0.0, adh = 0.0;  // per a_j (mz per a_j^2)
-    for (std::size_t k = 0; k < nx; ++k) {
-      px -= cx * step[k];
-      py -= cy * step[k] + cp * step_mid[k];
-      const double g = gmax * bnd[k];
-      const double q2 = px * px + py * py;
-      if (q2 > g * g) {
-        const double s = g / std::sqrt(q2);
-        px *= s;
-        py *= s;
-      } else {
-        adh += dX[k];
-      }
-      fx += px * dX[k];
-      fy += py * dX[k];
-      mz += py * centre_dX[k];
+  // One strip's march state. Per step (normalised by a_j): px -= (xi - phi
+  // y)/L1 dx, py -= (eta/L2 + phi x/L3) dx, then the traction bound.
+  struct March {
+    double cx, cy, cp;  // per-step increments
+    const double* bnd;  // the strip's normalised bound
+    double px = 0.0, py = 0.0, fx = 0.0, fy = 0.0, mz = 0.0, adh = 0.0;  // per a_j (mz per a_j^2)
+  };
+  const auto start = [&](std::size_t j) {
+    const double y = b * grid_.Y[j], aj = a * grid_.t[j];
+    return March{(sx - sp * y) * aj, sy * aj, sp * aj * aj, &bound_shape_[j * nx]};
+  };
+  const auto advance = [&](March& m, std::size_t k) {
+    m.px -= m.cx * step[k];
+    m.py -= m.cy * step[k] + m.cp * step_mid[k];
+    const double g = gmax * m.bnd[k];
+    const double q2 = m.px * m.px + m.py * m.py;
+    if (q2 > g * g) {
+      const double s = g / std::sqrt(q2);
+      m.px *= s;
+      m.py *= s;
+    } else {
+      m.adh += dX[k];
     }
-    return StripForces{fx * aj, fy * aj, mz * aj * aj, adh * aj};
-  });
+    m.fx += m.px * dX[k];
+    m.fy += m.py * dX[k];
+    m.mz += m.py * centre_dX[k];
+  };
+  StripSums sums;
+  const auto finish = [&](std::size_t j, const March& m) {
+    const double y = b * grid_.Y[j], aj = a * grid_.t[j];
+    sums.add(m.fx * aj, m.fy * aj, m.mz * aj * aj, y, aj, m.adh * aj, b * grid_.dY[j]);
+  };
+  // Strips in groups of two to five: independent marches in one loop, so that
+  // one strip's square root and division overlap the others' (each march is
+  // a chain of dependent operations); the same arithmetic per strip as one at
+  // a time, summed in strip order.
+  const auto group = [&]<std::size_t N>(std::size_t j0, std::integral_constant<std::size_t, N>) {
+    March m[N];
+    for (std::size_t i = 0; i < N; ++i) m[i] = start(j0 + i);
+    for (std::size_t k = 0; k < nx; ++k)
+      for (std::size_t i = 0; i < N; ++i) advance(m[i], k);
+    for (std::size_t i = 0; i < N; ++i) finish(j0 + i, m[i]);
+  };
+  std::size_t j = 0;
+  for (; ny - j >= 8; j += 4) group(j, std::integral_constant<std::size_t, 4>{});
+  switch (ny - j) {  // 0 to 7 strips left
+    case 7: group(j, std::integral_constant<std::size_t, 4>{}); group(j + 4, std::integral_constant<std::size_t, 3>{}); break;
+    case 6: group(j, std::integral_constant<std::size_t, 3>{}); group(j + 3, std::integral_constant<std::size_t, 3>{}); break;
+    case 5: group(j, std::integral_constant<std::size_t, 5>{}); break;
+    case 4: group(j, std::integral_constant<std::size_t, 4>{}); break;
+    case 3: group(j, std::integral_constant<std::size_t, 3>{}); break;
+    case 2: group(j, std::integral_constant<std::size_t, 2>{}); break;
+    case 1: group(j, std::integral_constant<std::size_t, 1>{}); break;
+    default: break;
+  }
   return strip_model_result(name_, in, sums);
 }
 

@@ -60,7 +60,7 @@ class KalkerTable {
       std::vector<double> x(x_.begin(), x_.end()), y(kNodes);
       for (int i = 0; i < kNodes; ++i) y[i] = kTable[i].c[s];
       const boost::math::interpolators::pchip<std::vector<double>> spline(std::move(x), std::move(y));
-      for (int i = 0; i < kNodes; ++i) slope_[s][i] = spline.prime(x_[i]);
+      for (int i = 0; i < kNodes; ++i) slope_[i][s] = spline.prime(x_[i]);
     }
   }
 
@@ -86,8 +86,13 @@ class KalkerTable {
     const double h10 = (t3 - 2.0 * t2 + t) * h;
     const double h01 = -2.0 * t3 + 3.0 * t2;
     const double h11 = (t3 - t2) * h;
-    for (int s = 0; s < kSeries; ++s)
-      out[s] = h00 * kTable[i].c[s] + h10 * slope_[s][i] + h01 * kTable[i + 1].c[s] + h11 * slope_[s][i + 1];
+    // Values and slopes of a node are contiguous over the 12 series (one
+    // vector loop).
+    const double* c0 = kTable[i].c;
+    const double* c1 = kTable[i + 1].c;
+    const double* m0 = slope_[i];
+    const double* m1 = slope_[i + 1];
+    for (int s = 0; s < kSeries; ++s) out[s] = h00 * c0[s] + h10 * m0[s] + h01 * c1[s] + h11 * m1[s];
   }
 
   static void node_values(int i, double out[kSeries]) {
@@ -96,7 +101,7 @@ class KalkerTable {
 
  private:
   std::array<double, kNodes> x_{};
-  double slope_[kSeries][kNodes]{};
+  double slope_[kNodes][kSeries]{};  // PCHIP slope dC/dx of series s at node i: slope_[i][s]
 };
 
 const KalkerTable& table() {
@@ -104,20 +109,20 @@ const KalkerTable& table() {
   return t;
 }
 
-// 1/C quadratic in nu through nu = 0, 0.25, 0.5 (CONTACT, physics-reference.md sec. 2.4);
-// the nodes nu = 0.25 and 0.5 are returned exactly.
-double in_nu(const double c[3], double nu) {
-  if (nu == 0.25) return c[1];
-  if (nu == 0.5) return c[2];
+// 1/C quadratic in nu through nu = 0, 0.25, 0.5 (CONTACT, physics-reference.md
+// sec. 2.4), for C11, C22, C23, C33 (three values each in v); the nodes nu =
+// 0.25 and 0.5 are returned exactly. 1 / (w0/c0 + w1/c1 + w2/c2) with a
+// single division per coefficient.
+KalkerCoefficients combine(const double v[kSeries], double nu) {
+  if (nu == 0.25) return {v[1], v[4], v[7], v[10]};
+  if (nu == 0.5) return {v[2], v[5], v[8], v[11]};
   const double w0 = 8.0 * (nu - 0.25) * (nu - 0.5);
   const double w1 = -16.0 * nu * (nu - 0.5);
   const double w2 = 8.0 * nu * (nu - 0.25);
-  // 1 / (w0/c0 + w1/c1 + w2/c2) with a single division.
-  return c[0] * c[1] * c[2] / (w0 * c[1] * c[2] + w1 * c[0] * c[2] + w2 * c[0] * c[1]);
-}
-
-KalkerCoefficients combine(const double v[kSeries], double nu) {
-  return {in_nu(v + 0, nu), in_nu(v + 3, nu), in_nu(v + 6, nu), in_nu(v + 9, nu)};
+  const auto one = [&](const double* c) {
+    return c[0] * c[1] * c[2] / (w0 * c[1] * c[2] + w1 * c[0] * c[2] + w2 * c[0] * c[1]);
+  };
+  return {one(v + 0), one(v + 3), one(v + 6), one(v + 9)};
 }
 
 // Kalker's asymptotes, a << b, g = a/b (physics-reference.md sec. 2.3).
