@@ -5,7 +5,6 @@
 #include <cmath>
 #include <numbers>
 #include <string>
-#include <type_traits>
 
 #include "contact/kalker_coefficients.hpp"
 #include "core/errors.hpp"
@@ -226,10 +225,7 @@ ContactForces Fastsim::compute(const ContactInput& in, TangentialWorkspace* /*ws
     const double y = b * grid_.Y[j], aj = a * grid_.t[j];
     sums.add(m.fx * aj, m.fy * aj, m.mz * aj * aj, y, aj, m.adh * aj, b * grid_.dY[j]);
   };
-  // Strips in groups of two to five: independent marches in one loop, so that
-  // one strip's square root and division overlap the others' (each march is
-  // a chain of dependent operations); the same arithmetic per strip as one at
-  // a time, summed in strip order.
+  // Strips in groups (for_strip_groups): their marches overlap; summed in strip order.
   const auto group = [&]<std::size_t N>(std::size_t j0, std::integral_constant<std::size_t, N>) {
     March m[N];
     for (std::size_t i = 0; i < N; ++i) m[i] = start(j0 + i);
@@ -237,18 +233,7 @@ ContactForces Fastsim::compute(const ContactInput& in, TangentialWorkspace* /*ws
       for (std::size_t i = 0; i < N; ++i) advance(m[i], k);
     for (std::size_t i = 0; i < N; ++i) finish(j0 + i, m[i]);
   };
-  std::size_t j = 0;
-  for (; ny - j >= 8; j += 4) group(j, std::integral_constant<std::size_t, 4>{});
-  switch (ny - j) {  // 0 to 7 strips left
-    case 7: group(j, std::integral_constant<std::size_t, 4>{}); group(j + 4, std::integral_constant<std::size_t, 3>{}); break;
-    case 6: group(j, std::integral_constant<std::size_t, 3>{}); group(j + 3, std::integral_constant<std::size_t, 3>{}); break;
-    case 5: group(j, std::integral_constant<std::size_t, 5>{}); break;
-    case 4: group(j, std::integral_constant<std::size_t, 4>{}); break;
-    case 3: group(j, std::integral_constant<std::size_t, 3>{}); break;
-    case 2: group(j, std::integral_constant<std::size_t, 2>{}); break;
-    case 1: group(j, std::integral_constant<std::size_t, 1>{}); break;
-    default: break;
-  }
+  for_strip_groups(ny, group);
   return strip_model_result(name_, in, sums);
 }
 
