@@ -1,8 +1,9 @@
 // `railsim wheelset-contact` and engine::wheelset_contact against CONTACT's
 // Manchester contact benchmark case A-2.2 (tests/data/reference/contact/
 // mbench_S1002_UIC60_sweep.csv, series A22_yaw_schedule: 0-10 mm shift,
-// yaw 2.4 mrad/mm, 10 kN per wheel, mu 0.3, V 2 m/s), the mirror symmetry of
-// the wheelset and bad input.
+// yaw 2.4 mrad/mm, 10 kN per wheel, mu 0.3, V 2 m/s) and the same sweep at
+// zero yaw and at a constant 24 mrad (series yaw0, yaw24mrad_const), the
+// mirror symmetry of the wheelset and bad input.
 // CONTACT's frame has y to the right and z down (tests/data/contact_geometry/
 // mbench_a22.yaml says how the poses map): its total force on the rail
 // (FX, FY, FZ)_C = (Fx, -Fy, -Fz) in railsim's track frame.
@@ -12,6 +13,8 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <set>
+#include <sstream>
 #include <string>
 
 #include "core/errors.hpp"
@@ -30,12 +33,12 @@ struct Reference {
   double max_angle_deg = 0;   // largest |contact angle| [deg]
 };
 
-// CONTACT's A22_yaw_schedule rows by (side, y_ws in 0.5 mm steps).
-std::map<std::pair<std::string, int>, Reference> contact_a22() {
+// CONTACT's rows of one series by (side, y_ws in 0.5 mm steps).
+std::map<std::pair<std::string, int>, Reference> contact_series(const std::string& series) {
   const auto ref = results::read_csv(test::reference_path("contact/mbench_S1002_UIC60_sweep.csv"));
   std::map<std::pair<std::string, int>, Reference> out;
   for (std::size_t i = 0; i < ref.rows.size(); ++i) {
-    if (ref.rows[i][ref.column("series")] != "A22_yaw_schedule") continue;
+    if (ref.rows[i][ref.column("series")] != series) continue;
     const int key = int(std::lround(ref.number(i, "y_ws_mm") * 2.0));
     Reference& r = out[{ref.rows[i][ref.column("side")], key}];
     r.Fx = ref.number(i, "FX_tr_N");   // global columns: the same on every patch row
@@ -47,21 +50,29 @@ std::map<std::pair<std::string, int>, Reference> contact_a22() {
   return out;
 }
 
-}  // namespace
 
-TEST_CASE("wheelset-contact: Manchester benchmark A-2.2 with the exact tangential solver against CONTACT",
-          "[engine][analysis][contact]") {
-  const std::string out = test::temp_dir("wheelset_contact_a22") + "/forces.csv";
-  const auto r = test::run_railsim("wheelset-contact " + test::data_path("contact_geometry/mbench_a22.yaml") +
+// One series through `railsim wheelset-contact --model mim` against CONTACT:
+// the total force of each wheel on the rail where both codes see one
+// elliptic-like patch, within 5 % of CONTACT's component or 2 % of mu Fz.
+struct SeriesResult {
+  int compared = 0, excluded = 0;
+  std::set<std::string> outside;                   // "side y_ws" of compared wheels beyond the tolerance
+  double flange_ours = NAN, flange_contact = NAN;  // first shift with a contact angle above 45 deg
+  double worst = 0.0;                              // largest |dF| / (mu Fz) over the compared wheels
+};
+
+SeriesResult compare_series(const std::string& cases, const std::string& series,
+                            const std::set<std::string>& known = {}) {
+  const std::string out = test::temp_dir("wheelset_contact_" + series) + "/forces.csv";
+  const auto r = test::run_railsim("wheelset-contact " + test::data_path("contact_geometry/" + cases) +
                                    " --model mim --out " + out);
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   const auto csv = results::read_csv(out);
-  const auto ref = contact_a22();
+  const auto ref = contact_series(series);
   REQUIRE(csv.rows.size() == 21);
   const double muFz = 0.3 * 1.0e4;
-  int compared = 0, excluded = 0;
-  double flange_ours = NAN, flange_contact = NAN;  // first shift with a contact angle above 45 deg
+  SeriesResult res;
   for (std::size_t i = 0; i < csv.rows.size(); ++i) {
     const double y_ws = -csv.number(i, "y") * 1e3;  // CONTACT's shift [mm]
     for (const std::string side : {"left", "right"}) {
@@ -70,8 +81,8 @@ TEST_CASE("wheelset-contact: Manchester benchmark A-2.2 with the exact tangentia
       double angle = 0;
       for (int k = 1; k <= np && k <= 3; ++k)
         angle = std::max(angle, std::abs(csv.number(i, side + std::to_string(k) + "_contact_angle")) * 180 / M_PI);
-      if (side == "right" && std::isnan(flange_ours) && angle > 45) flange_ours = y_ws;
-      if (side == "right" && std::isnan(flange_contact) && c.max_angle_deg > 45) flange_contact = y_ws;
+      if (side == "right" && std::isnan(res.flange_ours) && angle > 45) res.flange_ours = y_ws;
+      if (side == "right" && std::isnan(res.flange_contact) && c.max_angle_deg > 45) res.flange_contact = y_ws;
       // Compared where both codes see one patch and CONTACT's patch is
       // elliptic-like: its extent across (rounded up to whole 0.2 mm
       // elements) within 30 % of our ellipse's 2b. Wider, conformal patches
@@ -81,26 +92,70 @@ TEST_CASE("wheelset-contact: Manchester benchmark A-2.2 with the exact tangentia
       const double width = 2e3 * csv.number(i, side + "1_b");
       const bool elliptic = np == 1 && c.patches == 1 && c.width <= 1.3 * width + 0.4;
       const double Fx = csv.number(i, side + "_Fx"), Fy = csv.number(i, side + "_Fy");
-      INFO(side << " wheel, y_ws = " << y_ws << " mm: Fx " << Fx << " (CONTACT " << c.Fx << "), Fy " << Fy
-                << " (CONTACT " << c.Fy << "); patches " << np << "/" << c.patches << ", width " << width << "/"
-                << c.width << " mm");
+      INFO(series << ", " << side << " wheel, y_ws = " << y_ws << " mm: Fx " << Fx << " (CONTACT " << c.Fx
+                  << "), Fy " << Fy << " (CONTACT " << c.Fy << "); patches " << np << "/" << c.patches << ", width "
+                  << width << "/" << c.width << " mm");
       if (!elliptic) {
-        ++excluded;
+        ++res.excluded;
         continue;
       }
-      ++compared;
-      CHECK(std::abs(Fx - c.Fx) <= std::max(0.05 * std::abs(c.Fx), 0.02 * muFz));
-      CHECK(std::abs(Fy - c.Fy) <= std::max(0.05 * std::abs(c.Fy), 0.02 * muFz));
+      ++res.compared;
+      res.worst = std::max(res.worst, std::hypot(Fx - c.Fx, Fy - c.Fy) / muFz);
+      const bool within = std::abs(Fx - c.Fx) <= std::max(0.05 * std::abs(c.Fx), 0.02 * muFz) &&
+                          std::abs(Fy - c.Fy) <= std::max(0.05 * std::abs(c.Fy), 0.02 * muFz);
+      std::ostringstream key;
+      key << side << " " << y_ws;
+      if (!within) res.outside.insert(key.str());
+      CHECK((within || known.count(key.str()) == 1));
     }
   }
+  return res;
+}
+
+}  // namespace
+
+TEST_CASE("wheelset-contact: Manchester benchmark A-2.2 with the exact tangential solver against CONTACT",
+          "[engine][analysis][contact]") {
+  const SeriesResult r = compare_series("mbench_a22.yaml", "A22_yaw_schedule");
+  WARN("A-2.2: " << r.compared << " wheels compared, largest |dF| " << 100 * r.worst << " % of mu Fz");
   // Flange contact appears at the same shift (6.5 mm, contact angle 66 deg).
-  CHECK(flange_ours == Approx(6.5));
-  CHECK(flange_ours == flange_contact);
+  CHECK(r.flange_ours == Approx(6.5));
+  CHECK(r.flange_ours == r.flange_contact);
   // 42 wheel positions: the centred wheelset (both wheels), y_ws 0.5 mm right
   // and y_ws 5 mm right (two patches here, one 12.2 mm wide merged patch in
   // CONTACT) are the only ones left out.
-  CHECK(excluded <= 4);
-  CHECK(compared >= 38);
+  CHECK(r.excluded <= 4);
+  CHECK(r.compared >= 38);
+}
+
+TEST_CASE("wheelset-contact: the benchmark sweep at zero yaw and at 24 mrad against CONTACT",
+          "[engine][analysis][contact]") {
+  // The same profiles, loads, roll and pitch schedule as A-2.2, with the yaw
+  // held at 0 and at 24 mrad: at 24 mrad the yaw's lateral creepage makes
+  // Fy the larger tread force (0.7-1.1 mu Fz). Measured: yaw0 38 wheels
+  // compared, 4 left out as in A-2.2 (the centred wheelset, y_ws 0.5 mm right:
+  // conformal; the two-patch right wheel at 5 mm), largest |dF| 5.2 % of mu
+  // Fz (flange contact at 6.5 mm: 0.6 % of |F|); yaw24mrad_const 40 compared,
+  // 2 left out, 2.9 %. One wheel is outside the A-2.2 tolerance and named
+  // here: at zero yaw, right wheel, y_ws 1.5 mm, Fx -1892 N against CONTACT's
+  // -1771 (6.8 %, 4.0 % of mu Fz; at 1.0 mm 5.0 %): our longitudinal creepage
+  // there is 4.8 % larger, as the patch's rolling radius (the load-weighted
+  // mean of the strips' heights below the axle) lies 0.04 mm above CONTACT's
+  // at its reference point (0.02-0.03 mm on every tread patch of the sweep;
+  // with yaw the lateral creepage dominates and A-2.2 meets the tolerance).
+  for (const auto& [cases, series] : {std::pair<std::string, std::string>{"mbench_yaw0.yaml", "yaw0"},
+                                      {"mbench_yaw24.yaml", "yaw24mrad_const"}}) {
+    const SeriesResult r = compare_series(cases, series, series == "yaw0" ? std::set<std::string>{"right 1.5"}
+                                                                          : std::set<std::string>{});
+    WARN(series << ": " << r.compared << " wheels compared, " << r.excluded << " left out, largest |dF| "
+                << 100 * r.worst << " % of mu Fz");
+    CHECK(r.flange_ours == Approx(6.5));
+    CHECK(r.flange_ours == r.flange_contact);
+    CHECK(r.excluded <= 4);
+    CHECK(r.compared >= 38);
+    CHECK(r.worst < 0.06);
+    CHECK(r.outside.size() <= 1);
+  }
 }
 
 TEST_CASE("wheelset-contact: the mirrored pose gives the mirrored forces, with and without prescribed roll",
