@@ -21,6 +21,7 @@
 // DIR/critical_speed_vs_k.png; each entry's sweep in its own sub-folder.
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -99,6 +100,28 @@ std::string kmh(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.1f km/h", v * 3.6);
   return buf;
+}
+
+// Exit code of analyses whose verdict may be missing: a bifurcation sweep
+// whose hunting range could not be followed (engine BifurcationResult::
+// undetermined) gives no critical speed; the reason goes to stderr, and the
+// exit is 3 for a numerical failure, 2 for runs too short (a setting to raise),
+// never 0. `what` names the analysis (model, reduction entry).
+int verdict_exit(const engine::BifurcationResult& b, const std::string& what, int so_far = kExitSuccess) {
+  using U = engine::BifurcationResult::Undetermined;
+  if (b.undetermined_kind == U::none) return so_far;
+  std::fprintf(stderr, "railsim critical-speed: %sno critical speed: %s\n", what.empty() ? "" : (what + ": ").c_str(),
+               b.undetermined.c_str());
+  const int code = b.undetermined_kind == U::numerical_failure ? kExitNumericalFailure : kExitBadInput;
+  return std::max(so_far, code);
+}
+
+// A ramp that derailed (the physics): its message, no critical speed.
+int ramp_exit(const engine::RampingResult& r, const std::string& what) {
+  if (r.derailment.empty()) return kExitSuccess;
+  std::fprintf(stderr, "railsim critical-speed: %sno critical speed: %s\n", what.empty() ? "" : (what + ": ").c_str(),
+               r.derailment.c_str());
+  return kExitSuccess;
 }
 
 void print_ramp_start(const engine::CriticalSpeedStudySettings& s, const char* suffix) {
@@ -236,7 +259,9 @@ int run_reduction_study(const engine::Scenario& base, const CriticalSpeedArgs& a
   std::printf("\n  wall time %.1f s\n  results   %s/reductions.csv, summary.json, reductions.png, "
               "critical_speed_vs_k.png\n\n",
               r.wall_time, a.out.c_str());
-  return kExitSuccess;
+  int code = kExitSuccess;
+  for (const auto& e : r.entries) code = verdict_exit(e.bifurcation, e.label, code);
+  return code;
 }
 
 int run_critical_speed(const CriticalSpeedArgs& a) {
@@ -308,7 +333,9 @@ int run_critical_speed(const CriticalSpeedArgs& a) {
     std::printf("%-16s %22s %22s %12s\n", "contact model", "critical speed", "linear crit. speed", "wall time");
     for (std::size_t i = 0; i < runs.size(); ++i)
       std::printf("%-16s %22s %22s %10.1f s\n", runs[i].model.c_str(), kmh(pts.y[i] / 3.6).c_str(), "", pts.x[i]);
-    return kExitSuccess;
+    int code = kExitSuccess;
+    for (const auto& m : runs) code = verdict_exit(m.outcome.bifurcation, m.model, code);
+    return code;
   }
 
   const engine::CriticalSpeedWithBaseline r =
@@ -339,7 +366,8 @@ int run_critical_speed(const CriticalSpeedArgs& a) {
                 s.ramp_start_source.c_str(), s.v_min * 3.6);
   else
     std::printf("  method             %s over %.0f..%.0f km/h\n", a.method.c_str(), s.v_min * 3.6, s.v_max * 3.6);
-  std::printf("  critical speed     %s\n", kmh(o.critical).c_str());
+  std::printf("  critical speed     %s\n",
+              o.bifurcation.undetermined.empty() ? kmh(o.critical).c_str() : "undetermined (see below)");
   std::printf("  linear crit. speed %s (eigenvalues)\n", kmh(o.linear).c_str());
   if (r.with_baseline) {
     std::printf("  without reduction  %s (linear %s)\n", kmh(ref.critical).c_str(), kmh(ref.linear).c_str());
@@ -348,7 +376,11 @@ int run_critical_speed(const CriticalSpeedArgs& a) {
   }
   std::printf("  wall time          %.1f s\n  results            %s/summary.json\n\n", o.wall + ref.wall,
               a.out.c_str());
-  return kExitSuccess;
+  ramp_exit(o.ramping, "");
+  if (r.with_baseline) ramp_exit(ref.ramping, "without reduction");
+  int code = verdict_exit(o.bifurcation, "");
+  if (r.with_baseline) code = verdict_exit(ref.bifurcation, "without reduction", code);
+  return code;
 }
 
 }  // namespace
@@ -383,16 +415,16 @@ void register_critical_speed(CLI::App& app, CommandRunner& run) {
   cmd->add_option("--v-max", a->v_max_kmh, "Highest speed, also the ramping start speed [km/h] (default: scenario, else 300)");
   cmd->add_option("--v-step", a->v_step_kmh, "Speed step of the bifurcation sweep [km/h] (default: scenario, else 20)");
   cmd->add_option("--duration", a->duration, "Simulated time per sweep point [s] (default: scenario, else 6)")
-      ->check(CLI::Range(0.5, 600.0));
+      ->check(number_range(0.5, 600.0));
   cmd->add_option("--disturbance", a->large,
                   "Large initial lateral shift (down branch, ramping) [mm] (default: scenario, else 8)")
-      ->check(CLI::Range(0.01, 20.0));
+      ->check(number_range(0.01, 20.0));
   cmd->add_option("--small-disturbance", a->small, "Small initial lateral shift (up branch) [mm] (default: scenario, else 0.5)")
-      ->check(CLI::Range(0.001, 20.0));
+      ->check(number_range(0.001, 20.0));
   cmd->add_option("--threshold", a->threshold, "Settled amplitude that counts as hunting [mm] (default: scenario, else 0.5)")
-      ->check(CLI::Range(0.001, 20.0));
+      ->check(number_range(0.001, 20.0));
   cmd->add_option("--deceleration", a->deceleration, "Ramping deceleration [m/s^2] (default: scenario, else 0.5)")
-      ->check(CLI::Range(0.001, 10.0));
+      ->check(number_range(0.001, 10.0));
   cmd->add_flag("!--no-up-branch", a->up_branch, "Sweep only the strongly disturbed (down) branch");
   auto* on = cmd->add_flag("--continuation", a->continuation_on,
                            "Path following on the down branch: below its lowest hunting speed, each speed starts "

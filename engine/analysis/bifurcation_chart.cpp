@@ -43,6 +43,7 @@ void add_branch(results::Chart& c, const std::vector<BifurcationPoint>& pts, Bra
   results::ChartSeries decaying = series("", color, "v", "", true, 6);
   results::ChartSeries centred = series("", color, ".", ":", false, 5);
   results::ChartSeries stopped = series("", "k", "x", "", false, 6);
+  results::ChartSeries failed = series("", "r", "X", "", false, 7);  // numerical failure or too short: no verdict
   const double nan = std::nan("");
   PointState prev = PointState::centred;
   for (const BifurcationPoint* p : b) {
@@ -57,6 +58,8 @@ void add_branch(results::Chart& c, const std::vector<BifurcationPoint>& pts, Bra
       decaying.x.push_back(x), decaying.y.push_back(y);
     } else if (s == PointState::stopped) {
       stopped.x.push_back(x), stopped.y.push_back(y);
+    } else if (s == PointState::failed || s == PointState::too_short) {
+      failed.x.push_back(x), failed.y.push_back(y);
     }
     if (s == PointState::centred) {
       if (!centred.x.empty() && prev != PointState::centred) centred.x.push_back(nan), centred.y.push_back(nan);
@@ -66,7 +69,7 @@ void add_branch(results::Chart& c, const std::vector<BifurcationPoint>& pts, Bra
   }
   // The legend entry of the curve always exists, even without a settled point.
   c.series.push_back(settled);
-  for (auto* s : {&growing, &decaying, &centred, &stopped})
+  for (auto* s : {&growing, &decaying, &centred, &stopped, &failed})
     if (!s->x.empty()) c.series.push_back(*s);
   if (down && std::isfinite(critical) && std::isfinite(fold_amplitude)) {
     // The fold: the branch ends at the critical speed; below it the run falls back to the centred running.
@@ -91,7 +94,8 @@ void add_legend_keys(results::Chart& c, const BifurcationOptions& o) {
   std::snprintf(buf, sizeof buf, "dots: back to centred running (amplitude <= %.2g mm)", o.threshold * 1e3);
   c.series.push_back(series(buf, "0.3", ".", ":", false, 5));
   c.series.push_back(series("dashed drop: fold, jump to centred running", "0.3", "v", "--", false, 5));
-  c.series.push_back(series("x: run stopped (wheel unloaded), counted as hunting", "k", "x", "", false, 6));
+  c.series.push_back(series("x: run derailed, counted as hunting", "k", "x", "", false, 6));
+  c.series.push_back(series("red X: numerical failure or run too short: no verdict", "r", "X", "", false, 7));
 }
 
 }  // namespace

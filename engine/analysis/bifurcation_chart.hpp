@@ -7,7 +7,9 @@
 //   hollow up-triangles               still growing at the end of the run;
 //   small dots joined by a line       back to the centred running (amplitude
 //                                     at or below the threshold);
-//   black crosses                     runs that stopped (wheel unloaded).
+//   black crosses                     runs that derailed (counted as hunting);
+//   red X                             numerical failure, or a run too short to
+//                                     show a cycle: no verdict.
 // No line is drawn through an unsettled point. The fold of the down branch is
 // drawn as a jump: a dashed drop at the critical speed from the limit cycle
 // to the centred running. The rule the critical speed was read with is

@@ -41,7 +41,8 @@ Scenario at_speed(const Scenario& sc, double v0, double accel) {
 
 struct PointOutcome {
   double amplitude = 0.0, frequency = 0.0, growth = 0.0;
-  bool failed = false;
+  bool failed = false;             // derailed
+  bool numerical_failure = false;  // stopped by the numerics
 };
 
 // One constant-speed run from the state x0; the final state goes to *x_end.
@@ -61,11 +62,15 @@ PointOutcome run_point(const Scenario& base, double speed, const Eigen::VectorXd
   PointOutcome out;
   try {
     simulate(sc.model, sc.integrator, x0, o.duration, dt, obs);
-  } catch (const NumericalError& e) {
-    // A run that derails or lifts a wheel is hunting violently: it counts as
-    // unstable, with the amplitude it had reached.
-    spdlog::warn("speed {:.1f} km/h: run stopped ({}); counted as hunting", speed * 3.6, e.what());
+  } catch (const DerailmentError& e) {
+    // A run that derails is hunting violently: it counts as unstable, with the
+    // amplitude it had reached.
+    spdlog::warn("speed {:.1f} km/h: run derailed ({}); counted as hunting", speed * 3.6, e.what());
     out.failed = true;
+  } catch (const NumericalError& e) {
+    // A numerical failure says nothing about the physics: no verdict here.
+    spdlog::error("speed {:.1f} km/h: numerical failure ({}); this point has no verdict", speed * 3.6, e.what());
+    out.numerical_failure = true;
   }
   for (std::size_t w = 0; w < nw; ++w) {
     if (t.size() < 8) break;
@@ -83,7 +88,8 @@ PointOutcome run_point(const Scenario& base, double speed, const Eigen::VectorXd
 // (plain, continuation phase 1, the continuation chain): the columns below
 // (column "down": 1 on the down branch, 0 on the up branch) and the key
 // "<branch>:<speed %.6g m/s>", or "chain:<speed>" for a down-branch point
-// started from the final state of the speed above (path following).
+// started from the final state of the speed above (path following). Column
+// "failed": 0 the run reached its end, 1 it derailed, 2 numerical failure.
 const std::vector<std::string> kPointColumns = {"speed_m_s", "down", "amplitude_m", "frequency_hz", "growth", "failed"};
 constexpr const char* kChainPrefix = "chain";
 
@@ -96,7 +102,8 @@ std::string point_key(Branch b, bool chained, double v) {
 bool is_chain_key(const std::string& key) { return key.substr(0, key.find(':')) == kChainPrefix; }
 
 std::vector<double> point_row(double v, Branch b, const PointOutcome& r) {
-  return {v, b == Branch::down ? 1.0 : 0.0, r.amplitude, r.frequency, r.growth, r.failed ? 1.0 : 0.0};
+  return {v, b == Branch::down ? 1.0 : 0.0, r.amplitude, r.frequency, r.growth,
+          r.numerical_failure ? 2.0 : (r.failed ? 1.0 : 0.0)};
 }
 
 BifurcationPoint point_of(const SweepResult& r) {
@@ -106,7 +113,8 @@ BifurcationPoint point_of(const SweepResult& r) {
   p.amplitude = r.values[2];
   p.frequency = r.values[3];
   p.growth = r.values[4];
-  p.failed = r.values[5] > 0.5;
+  p.failed = r.values[5] > 0.5 && r.values[5] < 1.5;
+  p.numerical_failure = r.values[5] >= 1.5;
   p.continued = is_chain_key(r.key);
   return p;
 }
@@ -156,7 +164,7 @@ std::vector<double> run_sweep_point(const Scenario& sc, const BifurcationOptions
   const PointOutcome r = run_point(
       sc, v, disturbed_state(sc, b == Branch::down ? o.large_disturbance : o.small_disturbance), o,
       keep ? &x_end : nullptr);
-  if (keep && !r.failed) states->put(p.key, x_end);
+  if (keep && !r.failed && !r.numerical_failure) states->put(p.key, x_end);
   return point_row(v, b, r);
 }
 
@@ -216,13 +224,15 @@ BifurcationResult continuation_sweep(const Scenario& scenario, const Bifurcation
 const char* branch_name(Branch b) { return b == Branch::up ? "up" : "down"; }
 
 bool is_hunting(const BifurcationPoint& p, const BifurcationOptions& o) {
-  if (p.failed) return true;
-  return p.amplitude > o.threshold && p.growth > -o.decay_tolerance;
+  const PointState s = point_state(p, o);
+  return s == PointState::stopped || s == PointState::settled || s == PointState::growing;
 }
 
 PointState point_state(const BifurcationPoint& p, const BifurcationOptions& o) {
+  if (p.numerical_failure) return PointState::failed;
   if (p.failed) return PointState::stopped;
   if (!(p.amplitude > o.threshold)) return PointState::centred;
+  if (!(p.frequency > 0.0)) return PointState::too_short;
   if (p.growth > o.decay_tolerance) return PointState::growing;
   if (p.growth < -o.decay_tolerance) return PointState::decaying;
   return PointState::settled;
@@ -235,6 +245,8 @@ const char* point_state_name(PointState s) {
     case PointState::decaying: return "decaying";
     case PointState::centred: return "centred";
     case PointState::stopped: return "stopped";
+    case PointState::failed: return "failed";
+    case PointState::too_short: return "too_short";
   }
   return "settled";
 }
@@ -307,6 +319,27 @@ BifurcationResult collect(const std::vector<SweepResult>& rows, const Bifurcatio
     if (p.branch == Branch::down) down.push_back(&p);
   res.fold_amplitude = res.fold_frequency = kNaN;
   for (auto it = down.rbegin(); it != down.rend(); ++it) {
+    const PointState s = point_state(**it, o);
+    if (s == PointState::failed || s == PointState::too_short) {
+      // The hunting range cannot be followed past this point: no verdict.
+      char buf[400];
+      if (s == PointState::failed)
+        std::snprintf(buf, sizeof buf,
+                      "the run at %.1f km/h on the down branch stopped on a numerical failure (see the log); "
+                      "the hunting range above it cannot be told, so there is no critical speed",
+                      (*it)->speed * 3.6);
+      else
+        std::snprintf(buf, sizeof buf,
+                      "the run at %.1f km/h on the down branch is too short to show a cycle: amplitude %.2f mm "
+                      "with fewer than two half-cycles in the last %.0f %% of its %.3g s; raise the duration "
+                      "per point (--duration)",
+                      (*it)->speed * 3.6, (*it)->amplitude * 1e3, o.tail_fraction * 100.0, o.duration);
+      res.undetermined = buf;
+      res.undetermined_kind = s == PointState::failed ? BifurcationResult::Undetermined::numerical_failure
+                                                      : BifurcationResult::Undetermined::too_short;
+      res.nonlinear_critical_speed = res.fold_amplitude = res.fold_frequency = kNaN;
+      break;
+    }
     if (!is_hunting(**it, o)) break;
     res.nonlinear_critical_speed = (*it)->speed;
     res.fold_amplitude = (*it)->amplitude;
@@ -355,12 +388,12 @@ BifurcationResult continuation_sweep(const Scenario& scenario, const Bifurcation
   if (lowest >= 0 && static_cast<std::size_t>(lowest) + 1 < down.size()) {
     const SweepResult& vh = *down[static_cast<std::size_t>(lowest)];
     std::string from = vh.key;
-    if (!states.find(from) && !point_of(vh).failed) {
+    if (!states.find(from) && !point_of(vh).failed && !point_of(vh).numerical_failure) {
       // Its state was lost (an interrupted write): the run is deterministic, run it again.
       Eigen::VectorXd x_end;
       const PointOutcome r = run_point(scenario, vh.values[0], disturbed_state(scenario, o.large_disturbance), o,
                                        &x_end);
-      if (!r.failed) states.put(from, x_end);
+      if (!r.failed && !r.numerical_failure) states.put(from, x_end);
     }
     if (!states.find(from))
       spdlog::warn("bifurcation sweep: the run at {:.1f} km/h stopped, so no limit cycle to follow below it",
@@ -370,11 +403,12 @@ BifurcationResult continuation_sweep(const Scenario& scenario, const Bifurcation
       const double v = target.values[0];
       const std::string key = point_key(Branch::down, true, v);
       auto done = std::find_if(chain.begin(), chain.end(), [&](const SweepResult& r) { return r.key == key; });
-      if (done == chain.end() || (is_hunting(point_of(*done), o) && !point_of(*done).failed && !states.find(key))) {
+      if (done == chain.end() ||
+          (is_hunting(point_of(*done), o) && !point_of(*done).failed && !states.find(key))) {
         spdlog::info("{}: following the branch down to {:.1f} km/h", o.label, v * 3.6);
         Eigen::VectorXd x_end;
         const PointOutcome r = run_point(scenario, v, *states.find(from), o, &x_end);
-        if (!r.failed) states.put(key, x_end);
+        if (!r.failed && !r.numerical_failure) states.put(key, x_end);
         if (done != chain.end()) chain.erase(done);
         chain.push_back({target.index, key, point_row(v, Branch::down, r)});
         write_sweep_file(chain_csv, kPointColumns, chain);
@@ -419,22 +453,30 @@ RampingResult ramping(const Scenario& scenario, const RampingOptions& o) {
       x_end = x;
     });
   };
-  bool stopped = false;
+  const auto derailed = [&](const DerailmentError& e, const char* phase) {
+    res.derailment = std::string("the vehicle derailed ") + phase + ": " + e.what();
+    res.critical_speed = kNaN;
+    spdlog::warn("ramping: {}", res.derailment);
+  };
   try {
     simulate(sc.model, sc.integrator, disturbed_state(sc, o.disturbance), o.settle_time, o.output_interval,
              record(sc, 0.0));
+  } catch (const DerailmentError& e) {
+    char phase[96];
+    std::snprintf(phase, sizeof phase, "while settling at the start speed %.1f km/h (lower the start speed)",
+                  o.v_start * 3.6);
+    derailed(e, phase);
   } catch (const NumericalError& e) {
-    spdlog::warn("ramping: settling run stopped: {}", e.what());
-    stopped = true;
+    throw NumericalError(std::string("ramping: numerical failure while settling at the start speed: ") + e.what());
   }
   // Hunting at the start: the last second of the settling run still oscillates.
   double late_peak = 0.0;
   for (std::size_t i = 0; i < t_all.size(); ++i)
     if (t_all[i] > o.settle_time - 1.0) late_peak = std::max(late_peak, ymax_all[i]);
-  res.hunting_at_start = stopped || late_peak > o.threshold;
-  if (stopped) throw NumericalError("ramping: the vehicle derailed while settling at the start speed " +
-                                    std::to_string(o.v_start * 3.6) + " km/h; lower v_start");
-  if (!res.hunting_at_start) {
+  res.hunting_at_start = !res.derailment.empty() || late_peak > o.threshold;
+  if (!res.derailment.empty()) {
+    // No ramp: the record ends where the vehicle derailed.
+  } else if (!res.hunting_at_start) {
     res.critical_speed = kNaN;
     spdlog::warn("ramping: no hunting at {:.1f} km/h (peak {:.2f} mm in the last second): raise the start speed",
                  o.v_start * 3.6, late_peak * 1e3);
@@ -445,12 +487,20 @@ RampingResult ramping(const Scenario& scenario, const RampingOptions& o) {
     ramp.model.speed.s0 = sc.model.speed.distance(o.settle_time);
     const double duration = (o.v_start - o.v_end) / o.deceleration;
     const std::size_t first_ramp = t_all.size();
-    simulate(ramp.model, ramp.integrator, x_end, duration, o.output_interval, record(ramp, o.settle_time));
-    long at = -1;
-    res.critical_speed = collapse_speed(t_all, v_all, ymax_all, first_ramp, o, res.hunting_at_end, at);
-    if (at >= 0) {
-      res.critical_time = t_all[static_cast<std::size_t>(at)];
-      res.critical_amplitude = ymax_all[static_cast<std::size_t>(at)];
+    try {
+      simulate(ramp.model, ramp.integrator, x_end, duration, o.output_interval, record(ramp, o.settle_time));
+    } catch (const DerailmentError& e) {
+      derailed(e, "during the ramp");
+    } catch (const NumericalError& e) {
+      throw NumericalError(std::string("ramping: numerical failure during the ramp: ") + e.what());
+    }
+    if (res.derailment.empty()) {
+      long at = -1;
+      res.critical_speed = collapse_speed(t_all, v_all, ymax_all, first_ramp, o, res.hunting_at_end, at);
+      if (at >= 0) {
+        res.critical_time = t_all[static_cast<std::size_t>(at)];
+        res.critical_amplitude = ymax_all[static_cast<std::size_t>(at)];
+      }
     }
   }
   res.time = std::move(t_all);

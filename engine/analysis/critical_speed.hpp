@@ -67,7 +67,11 @@ struct BifurcationPoint {
   double amplitude = 0.0;            // max over wheelsets of the settled amplitude [m]
   double frequency = 0.0;            // of the wheelset with the largest amplitude [Hz]
   double growth = 0.0;               // relative amplitude change over the tail
-  bool failed = false;               // run stopped (e.g. derailment) -> treated as hunting
+  bool failed = false;               // run stopped by a derailment (the physics) -> treated as hunting
+  // Run stopped by a numerical failure (integrator, NaN, absurd state): the
+  // point has no verdict, and a sweep whose verdict depends on it has no
+  // critical speed (BifurcationResult::undetermined).
+  bool numerical_failure = false;
   bool continued = false;            // down branch: started from the limit cycle of the speed above
 };
 
@@ -78,10 +82,19 @@ struct BifurcationResult {
   // Limit cycle at the fold: amplitude [m] and frequency [Hz] of the down
   // branch at nonlinear_critical_speed (the lowest hunting speed); NaN without one.
   double fold_amplitude = 0.0, fold_frequency = 0.0;
+  // Why there is no critical speed although the sweep ran (empty: the verdict
+  // stands): walking down from the top of the sweep, a point stopped by a
+  // numerical failure, or a point whose run was too short to show a cycle in
+  // its tail (amplitude above the threshold, fewer than two half-cycles), came
+  // before the hunting range ended. `undetermined_kind` says which.
+  std::string undetermined;
+  enum class Undetermined { none, numerical_failure, too_short } undetermined_kind = Undetermined::none;
 };
 
 // Hunting: the run derailed, or a settled amplitude above the threshold that is
-// not decaying by more than decay_tolerance over the tail.
+// not decaying by more than decay_tolerance over the tail. A numerical failure
+// or a run too short to measure a cycle is not hunting (and has no verdict:
+// point_state failed / too_short).
 bool is_hunting(const BifurcationPoint& p, const BifurcationOptions& o);
 
 // What a point's run did by its end (for charts and reports), with the
@@ -90,8 +103,12 @@ bool is_hunting(const BifurcationPoint& p, const BifurcationOptions& o);
 //   growing   amplitude above the threshold, still growing (counts as hunting);
 //   decaying  amplitude above the threshold, still decaying (not hunting);
 //   centred   amplitude at or below the threshold (back to the centred running);
-//   stopped   the run stopped (wheel unloaded, left the geometry): counts as hunting.
-enum class PointState { settled, growing, decaying, centred, stopped };
+//   stopped   the run derailed (wheelset past its flange): counts as hunting;
+//   failed    the run stopped on a numerical failure: no verdict;
+//   too_short amplitude above the threshold but no measurable cycle in the tail
+//             (fewer than two half-cycles): no verdict, the runs need more time.
+enum class PointState { settled, growing, decaying, centred, stopped, failed, too_short };
+inline constexpr int kPointStates = 7;
 PointState point_state(const BifurcationPoint& p, const BifurcationOptions& o);
 const char* point_state_name(PointState s);
 
@@ -118,10 +135,16 @@ struct RampingResult {
   // Where the critical speed was read: time [s] and envelope peak [m] at the
   // start of the final collapse (NaN when no critical speed).
   double critical_time = 0.0, critical_amplitude = 0.0;
+  // The vehicle derailed (the physics: a wheelset past its flange) while
+  // settling at the start speed or during the ramp: the message, and no
+  // critical speed (the record keeps what was run). Empty: it did not.
+  std::string derailment;
   std::vector<double> time, speed, max_lateral;  // envelope record (for charts)
   double wall_time = 0.0;
 };
 
+// A numerical failure of either phase throws NumericalError (no verdict); a
+// derailment is a result (RampingResult::derailment).
 RampingResult ramping(const Scenario& scenario, const RampingOptions& options);
 
 // Linear critical speed by bisection of the largest real part over [v_lo, v_hi];

@@ -147,12 +147,13 @@ Json critical_speed_summary(const Scenario& sc, const CriticalSpeedStudySettings
     s.set("speed_resolution_kmh", given_kmh(st.v_step));
     s.set("rule", critical_speed_rule(bo));
     Json counts = Json::object();
-    int n[5] = {0, 0, 0, 0, 0};
+    int n[kPointStates] = {};
     for (const auto& p : r.points) ++n[static_cast<int>(point_state(p, bo))];
-    for (int q = 0; q < 5; ++q) counts.set(point_state_name(static_cast<PointState>(q)), n[q]);
+    for (int q = 0; q < kPointStates; ++q) counts.set(point_state_name(static_cast<PointState>(q)), n[q]);
     s.set("points_by_state", counts);
     s.set("limit_cycle_amplitude_at_fold_mm", number_or_null(r.fold_amplitude, 1e3));
     s.set("limit_cycle_frequency_at_fold_hz", number_or_null(r.fold_frequency));
+    if (!r.undetermined.empty()) s.set("undetermined", r.undetermined);
   } else {
     const RampingResult& r = o.ramping;
     s.set("deceleration_m_s2", st.deceleration);
@@ -162,6 +163,7 @@ Json critical_speed_summary(const Scenario& sc, const CriticalSpeedStudySettings
     s.set("start_speed_source", st.ramp_start_source);
     s.set("critical_speed_read_at_time_s", number_or_null(r.critical_time));
     s.set("envelope_at_critical_speed_mm", number_or_null(r.critical_amplitude, 1e3));
+    if (!r.derailment.empty()) s.set("derailment", r.derailment);
   }
   s.set("scenario", sc.name);
   s.set("vehicle", sc.model.vehicle_name);

@@ -352,14 +352,15 @@ results::Json reduction_study_summary(const Scenario& sc, const ReductionStudyOp
     j.set("limit_cycle_amplitude_at_fold_mm", num(e.fold_amplitude * 1e3));
     j.set("limit_cycle_frequency_at_fold_hz", num(e.fold_frequency));
     if (r.method == "bifurcation") {
-      int counts[5] = {0, 0, 0, 0, 0};
+      int counts[kPointStates] = {};
       for (const auto& p : e.bifurcation.points) ++counts[static_cast<int>(point_state(p, o.bifurcation))];
       Json c = Json::object();
-      for (int q = 0; q < 5; ++q) c.set(point_state_name(static_cast<PointState>(q)), counts[q]);
+      for (int q = 0; q < kPointStates; ++q) c.set(point_state_name(static_cast<PointState>(q)), counts[q]);
       j.set("points_by_state", c);
       j.set("state_one_step_below_critical_speed", e.below_state.empty() ? Json(nullptr) : Json(e.below_state));
       j.set("critical_speed_is_upper_bound", e.below_state == "decaying" || e.below_state == "growing");
       j.set("points", static_cast<long>(e.bifurcation.points.size()));
+      if (!e.bifurcation.undetermined.empty()) j.set("undetermined", e.bifurcation.undetermined);
     } else {
       j.set("hunting_at_start", e.ramping.hunting_at_start);
       j.set("hunting_at_end", e.ramping.hunting_at_end);

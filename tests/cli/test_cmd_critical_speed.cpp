@@ -302,3 +302,36 @@ TEST_CASE("railsim critical-speed --reductions under mpirun -np 2 gives the thre
     CHECK(railsim::test::read_text(dir + "/mpi/" + f) == railsim::test::read_text(dir + "/threads/" + f));
 }
 #endif
+
+TEST_CASE("railsim critical-speed: a sweep whose runs fail numerically or are too short exits non-zero, no verdict",
+          "[cli][critical_speed][robustness]") {
+  const std::string dir = railsim::test::temp_dir("cli_cs_no_verdict");
+  // A forced blow-up: an integrator allowed three steps. Exit 3, no critical speed, the reason named.
+  std::string text = railsim::test::read_text(kScenario);
+  text.replace(text.find("vehicle: ../../../"), 18, "vehicle: " + railsim::test::source_path(""));
+  const std::size_t at = text.find("integrator:");
+  REQUIRE(at != std::string::npos);
+  text = text.substr(0, at) + "integrator: {method: cvode_bdf, max_steps: 3}\n" +
+         text.substr(text.find('\n', at) + 1);
+  std::ofstream(dir + "/max_steps_3.yaml") << text;
+  auto r = run_railsim("critical-speed '" + dir + "/max_steps_3.yaml' --v-min 160 --v-max 170 --v-step 5 "
+                       "--duration 6 --threads 2 --no-up-branch --out '" + dir + "/failed'");
+  INFO(r.output);
+  CHECK(r.exit_code == 3);
+  CHECK(r.output.find("no critical speed") != std::string::npos);
+  CHECK(r.output.find("numerical failure") != std::string::npos);
+  auto s = railsim::test::read_json(dir + "/failed/summary.json");
+  CHECK(std::isnan(json_number(s, "critical_speed_kmh")));
+  CHECK(s["points_by_state"]["failed"] == 3);
+  CHECK(s["points_by_state"]["stopped"] == 0);
+  // Runs of 0.5 s: a tail of 0.15 s holds no cycle. Exit 2 (a setting to raise), naming --duration.
+  r = run_railsim("critical-speed '" + kScenario + "' --v-min 160 --v-max 170 --v-step 5 --duration 0.5 --threads 2 "
+                  "--no-up-branch --out '" + dir + "/short'");
+  INFO(r.output);
+  CHECK(r.exit_code == 2);
+  CHECK(r.output.find("too short") != std::string::npos);
+  CHECK(r.output.find("--duration") != std::string::npos);
+  s = railsim::test::read_json(dir + "/short/summary.json");
+  CHECK(std::isnan(json_number(s, "critical_speed_kmh")));
+  CHECK(s["undetermined"].get<std::string>().find("too short") != std::string::npos);
+}

@@ -34,7 +34,7 @@ const railsim::results::ChartSeries* find_style(const railsim::results::Chart& c
 
 }  // namespace
 
-TEST_CASE("point states: settled, growing, decaying, centred, stopped", "[chart][critical_speed]") {
+TEST_CASE("point states: settled, growing, decaying, centred, stopped, failed, too short", "[chart][critical_speed]") {
   BifurcationOptions o;  // threshold 0.5 mm, decay tolerance 5 %
   CHECK(point_state(point(60, 6.0, 0.01), o) == PointState::settled);
   CHECK(point_state(point(60, 6.0, -0.049), o) == PointState::settled);
@@ -42,6 +42,17 @@ TEST_CASE("point states: settled, growing, decaying, centred, stopped", "[chart]
   CHECK(point_state(point(60, 2.0, -0.3), o) == PointState::decaying);
   CHECK(point_state(point(60, 0.4, -0.3), o) == PointState::centred);
   CHECK(point_state(point(60, 0.4, 0.0, true), o) == PointState::stopped);
+  // A numerical failure and a run with no cycle in its tail have no verdict: not hunting.
+  BifurcationPoint failed = point(60, 6.0, 0.0);
+  failed.numerical_failure = true;
+  CHECK(point_state(failed, o) == PointState::failed);
+  CHECK_FALSE(is_hunting(failed, o));
+  BifurcationPoint short_run = point(60, 6.0, 0.0);
+  short_run.frequency = 0.0;
+  CHECK(point_state(short_run, o) == PointState::too_short);
+  CHECK_FALSE(is_hunting(short_run, o));
+  CHECK(point_state(point(60, 0.4, 0.0), o) == PointState::centred);  // below the threshold: no cycle needed
+  CHECK(is_hunting(point(60, 0.4, 0.0, true), o));  // a derailment counts as hunting
   // Hunting as before: settled or growing above the threshold, or stopped.
   CHECK(is_hunting(point(60, 6.0, 0.2), o));
   CHECK_FALSE(is_hunting(point(60, 2.0, -0.3), o));
@@ -146,4 +157,5 @@ TEST_CASE("a sweep reports the limit cycle at its fold", "[chart][critical_speed
       CHECK(r.fold_frequency == p.frequency);
     }
   CHECK(r.fold_amplitude > o.threshold);
+  CHECK(r.undetermined.empty());
 }

@@ -292,3 +292,45 @@ TEST_CASE("linear critical speed: an undamped mode at the range start is not a l
   CHECK(max_real_part(sc.model, 0.99 * v) < kUnstableGrowth);
   CHECK(max_real_part(sc.model, 1.01 * v) > kUnstableGrowth);
 }
+
+TEST_CASE("bifurcation sweep: numerical failures and runs too short give no critical speed, not hunting",
+          "[critical_speed][robustness]") {
+  const Scenario base = load_scenario(railsim::test::data_path("scenarios/single_wheelset_flange.yaml"));
+  BifurcationOptions o;
+  o.v_min = 44.0;
+  o.v_max = 48.0;
+  o.v_step = 2.0;
+  o.duration = 6.0;
+  o.up_branch = false;
+  o.threads = 2;
+  SECTION("an integrator that cannot take a step: every point fails numerically") {
+    Scenario sc = base;
+    sc.integrator.max_steps = 3;  // a forced blow-up: legal, but no run gets far
+    const auto r = bifurcation_sweep(sc, o, railsim::test::temp_dir("numerical_failure") + "/points.csv");
+    REQUIRE(r.points.size() == 3);
+    for (const auto& p : r.points) {
+      CHECK(p.numerical_failure);
+      CHECK_FALSE(p.failed);
+      CHECK(point_state(p, o) == PointState::failed);
+      CHECK_FALSE(is_hunting(p, o));
+    }
+    CHECK(std::isnan(r.nonlinear_critical_speed));
+    CHECK(r.undetermined_kind == BifurcationResult::Undetermined::numerical_failure);
+    CHECK(r.undetermined.find("48.0 km/h") == std::string::npos);  // speeds in km/h: 48 m/s is 172.8 km/h
+    CHECK(r.undetermined.find("172.8 km/h") != std::string::npos);
+    CHECK(r.undetermined.find("numerical failure") != std::string::npos);
+  }
+  SECTION("runs too short to show a cycle in their tail") {
+    o.duration = 0.5;  // tail 0.15 s: less than one hunting half-cycle (about 2-3 Hz here)
+    const auto r = bifurcation_sweep(base, o, railsim::test::temp_dir("too_short") + "/points.csv");
+    REQUIRE(r.points.size() == 3);
+    const BifurcationPoint* top = find_point(r, Branch::down, 48.0);
+    REQUIRE(top != nullptr);
+    CHECK(top->amplitude > o.threshold);
+    CHECK(top->frequency == 0.0);
+    CHECK(point_state(*top, o) == PointState::too_short);
+    CHECK(std::isnan(r.nonlinear_critical_speed));
+    CHECK(r.undetermined_kind == BifurcationResult::Undetermined::too_short);
+    CHECK(r.undetermined.find("--duration") != std::string::npos);
+  }
+}

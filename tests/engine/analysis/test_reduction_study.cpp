@@ -108,7 +108,15 @@ TEST_CASE("reductions study: linear critical speed falls monotonically with k, f
   REQUIRE(r.entries.size() == 7);
   REQUIRE(r.reference == 6);
   CHECK(r.entries[6].added_reference);
-  CHECK(r.entries[6].change_percent == 0.0);
+  // 0.6 s per point (a cheap sweep for the linear part and the files): the
+  // coach's 290-300 km/h runs end with no cycle in their 0.18 s tail, so the
+  // sweeps have no nonlinear verdict, and say why (BifurcationResult::undetermined).
+  for (const auto& e : r.entries) {
+    INFO(e.label);
+    CHECK(std::isnan(e.critical));
+    CHECK(e.bifurcation.undetermined_kind == BifurcationResult::Undetermined::too_short);
+  }
+  CHECK(std::isnan(r.entries[6].change_percent));
   // Linear critical speed (eigenvalues) against uniform k = 1, 0.9, ..., 0.5:
   // strictly falling as k falls (measured 380.8, 363.7, 348.6, 336.4, 328.4, 326.4 km/h).
   double previous = r.entries[6].linear;
