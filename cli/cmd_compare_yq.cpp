@@ -70,6 +70,9 @@ int run_compare_yq(const CompareYqArgs& a) {
       std::printf("  %-24s %-6s %9.3f %10.1f %9.2f %s\n", r.label.substr(0, 24).c_str(), s == 0 ? "left" : "right",
                   w.peak, w.peak_distance, w.peak_time, ex);
     }
+  for (const auto& r : c.runs)
+    if (!r.warning.empty()) std::printf("  warning: %s: %s\n", r.label.c_str(), r.warning.c_str());
+    else if (r.status == "derailed") std::printf("  note: %s: the run ended in a derailment\n", r.label.c_str());
   std::printf("\n  results %s/yq_comparison.csv, summary.json, yq_comparison.png\n\n", a.out.c_str());
   return kExitSuccess;
 }

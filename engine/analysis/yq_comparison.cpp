@@ -4,6 +4,9 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <spdlog/spdlog.h>
 
 #include "core/errors.hpp"
 #include "engine/analysis/run_history.hpp"
@@ -59,6 +62,31 @@ results::Json wheel_json(const YqWheelResult& w) {
   return j;
 }
 
+// The run's summary.json (written by `railsim run`): a run that failed
+// numerically has no verdict; one of another scenario is compared with a warning.
+void read_run_status(const std::string& file, const Scenario& sc, YqRun& run) {
+  if (!std::filesystem::exists(file)) {
+    run.warning = "no summary.json beside channels.csv: the run's status is unknown";
+    spdlog::warn("compare-yq: {}: {}", run.dir, run.warning);
+    return;
+  }
+  std::ifstream in(file);
+  nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  if (j.is_discarded() || !j.is_object()) throw InputError(file + ": not a JSON object (a run's summary.json)");
+  if (j.contains("status") && j["status"].is_string()) run.status = j["status"].get<std::string>();
+  if (run.status == "failed") {
+    const std::string why = j.contains("error") && j["error"].is_string() ? j["error"].get<std::string>() : "";
+    throw InputError(file + ": status 'failed': the run stopped on a numerical failure" +
+                     (why.empty() ? std::string() : " (" + why + ")") +
+                     "; its Y/Q has no verdict (run it again, e.g. with a tighter integrator tolerance)");
+  }
+  if (j.contains("scenario") && j["scenario"].is_string() && j["scenario"].get<std::string>() != sc.name) {
+    run.warning = "a run of scenario '" + j["scenario"].get<std::string>() + "', compared against '" + sc.name +
+                  "' (its wheelsets, flange angle and friction)";
+    spdlog::warn("compare-yq: {}: {}", run.dir, run.warning);
+  }
+}
+
 }  // namespace
 
 YqComparison compare_yq(const Scenario& sc, const std::vector<std::string>& dirs, const std::vector<std::string>& labels,
@@ -98,15 +126,22 @@ YqComparison compare_yq(const Scenario& sc, const std::vector<std::string>& dirs
     const std::string file = dirs[r] + "/channels.csv";
     if (!std::filesystem::exists(file))
       throw InputError(file + ": not found (give folders written by `railsim run SCENARIO --out DIR`)");
+    read_run_status(dirs[r] + "/summary.json", sc, run);
     const results::CsvTable t = results::read_csv(file);
-    for (const std::string& col : {std::string("time"), std::string("distance"), c.wheelset + ".L.YQ",
-                                  c.wheelset + ".R.YQ"})
-      t.column(col);  // throws naming the file and the column
+    const std::string cols[4] = {"time", "distance", c.wheelset + ".L.YQ", c.wheelset + ".R.YQ"};
+    for (const std::string& col : cols) t.column(col);  // throws naming the file and the column
+    const auto finite = [&](std::size_t i, const std::string& col) {
+      const double v = t.number(i, col);
+      if (!std::isfinite(v))
+        throw InputError(file + ": line " + std::to_string(i + 2) + ", column '" + col + "': '" +
+                         t.rows[i][t.column(col)] + "' is not a finite number (a run's channels hold finite values)");
+      return v;
+    };
     for (std::size_t i = 0; i < t.rows.size(); ++i) {
-      run.time.push_back(t.number(i, "time"));
-      run.distance.push_back(t.number(i, "distance") + c.offset);
-      run.yq[0].push_back(t.number(i, c.wheelset + ".L.YQ"));
-      run.yq[1].push_back(t.number(i, c.wheelset + ".R.YQ"));
+      run.time.push_back(finite(i, cols[0]));
+      run.distance.push_back(finite(i, cols[1]) + c.offset);
+      run.yq[0].push_back(finite(i, cols[2]));
+      run.yq[1].push_back(finite(i, cols[3]));
     }
     if (run.time.size() < 2) throw InputError(file + ": fewer than two samples");
     for (int s = 0; s < 2; ++s) run.wheel[s] = evaluate(run.time, run.distance, run.yq[s], c.nadal);
@@ -173,6 +208,8 @@ results::Json yq_comparison_summary(const YqComparison& c) {
     results::Json j = results::Json::object();
     j.set("label", r.label);
     j.set("dir", r.dir);
+    j.set("status", r.status.empty() ? results::Json(nullptr) : results::Json(r.status));
+    if (!r.warning.empty()) j.set("warning", r.warning);
     results::Json wheels = results::Json::object();
     wheels.set("left", wheel_json(r.wheel[0]));
     wheels.set("right", wheel_json(r.wheel[1]));

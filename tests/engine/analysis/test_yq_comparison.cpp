@@ -76,3 +76,43 @@ TEST_CASE("Y/Q comparison: peaks, places and how long Nadal's limit is exceeded"
   std::ofstream(dir + "/c/channels.csv") << "time,distance,ws2.L.YQ\n0,0,0\n";
   CHECK_THROWS_WITH(compare_yq(sc, {dir + "/c"}, {}), Catch::Contains("c/channels.csv"));
 }
+
+TEST_CASE("Y/Q comparison refuses non-finite channels and failed runs, and warns on another scenario's run",
+          "[yq_comparison][robustness]") {
+  const Scenario sc = load_scenario(railsim::test::data_path("scenarios/single_wheelset_flange.yaml"));
+  const std::string dir = railsim::test::temp_dir("yq_cmp_status");
+  // A NaN in a Y/Q column (line 4 of the file: header, then rows 0, 1, 2): an error naming line and column,
+  // not a peak or an exceedance of Nadal's limit.
+  std::filesystem::create_directories(dir + "/nan");
+  std::ofstream(dir + "/nan/channels.csv") << "time,distance,ws1.L.YQ,ws1.R.YQ\n0,0,0,0.1\n0.01,0.1,0,0.2\n"
+                                              "0.02,0.2,0,nan\n0.03,0.3,0,0.1\n";
+  CHECK_THROWS_WITH(compare_yq(sc, {dir + "/nan"}, {}),
+                    Catch::Contains("nan/channels.csv: line 4, column 'ws1.R.YQ'") &&
+                        Catch::Contains("not a finite number"));
+  std::filesystem::create_directories(dir + "/inf");
+  std::ofstream(dir + "/inf/channels.csv") << "time,distance,ws1.L.YQ,ws1.R.YQ\n0,0,0,0.1\n0.01,inf,0,0.2\n";
+  CHECK_THROWS_WITH(compare_yq(sc, {dir + "/inf"}, {}), Catch::Contains("line 3, column 'distance'"));
+  // A run that failed numerically: no verdict on its Y/Q.
+  write_run(dir + "/failed", 2.0);
+  std::ofstream(dir + "/failed/summary.json")
+      << R"({"scenario": "single_wheelset_flange", "status": "failed", "error": "integrator: step collapse at t = 4.2 s"})";
+  CHECK_THROWS_WITH(compare_yq(sc, {dir + "/failed"}, {}),
+                    Catch::Contains("failed/summary.json: status 'failed'") && Catch::Contains("step collapse"));
+  // A derailed run is physics: compared, its status kept.
+  write_run(dir + "/derailed", 2.0);
+  std::ofstream(dir + "/derailed/summary.json") << R"({"scenario": ")" << sc.name << R"(", "status": "derailed"})";
+  const YqComparison d = compare_yq(sc, {dir + "/derailed"}, {});
+  CHECK(d.runs[0].status == "derailed");
+  CHECK(d.runs[0].warning.empty());
+  CHECK(d.runs[0].wheel[1].exceeded);
+  // A run of another scenario: compared, with a warning in the summary.
+  write_run(dir + "/other", 1.0);
+  std::ofstream(dir + "/other/summary.json") << R"({"scenario": "manchester_coach", "status": "ok"})";
+  const YqComparison o = compare_yq(sc, {dir + "/other"}, {});
+  CHECK(o.runs[0].warning.find("scenario 'manchester_coach'") != std::string::npos);
+  CHECK(yq_comparison_summary(o).dump().find("\"warning\"") != std::string::npos);
+  // A summary.json that is not JSON: named.
+  write_run(dir + "/junk", 1.0);
+  std::ofstream(dir + "/junk/summary.json") << "{not json";
+  CHECK_THROWS_WITH(compare_yq(sc, {dir + "/junk"}, {}), Catch::Contains("junk/summary.json: not a JSON object"));
+}
