@@ -655,8 +655,19 @@ Evaluation evaluate_history(const engine::Scenario& sc, const engine::SafetySett
                    ")";
   results::Chart yq, rms;
   std::vector<std::pair<const results::Chart*, std::string>> charts;
-  if (!out.empty() && chart_yq(history, safety, ctx, yq)) charts.emplace_back(&yq, out + "/yq.png");
-  if (!out.empty() && chart_sum_y_rms(safety, ctx, rms)) charts.emplace_back(&rms, out + "/sum_y_rms.png");
+  // Which charts the run has, and why one is missing (the same keys with or without an output folder).
+  results::Json drawn = results::Json::object();
+  const bool has_yq = chart_yq(history, safety, ctx, yq), has_rms = chart_sum_y_rms(safety, ctx, rms);
+  const char* no_folder = "not written: no output folder";
+  if (has_yq && !out.empty()) charts.emplace_back(&yq, out + "/yq.png");
+  if (has_rms && !out.empty()) charts.emplace_back(&rms, out + "/sum_y_rms.png");
+  drawn.set("yq.png", !has_yq ? results::Json("not drawn: no Y/Q samples")
+                              : results::Json(out.empty() ? no_folder : "written"));
+  drawn.set("sum_y_rms.png", !has_rms ? results::Json("not drawn: no (Sum Y)_rms window (the run covers less than "
+                                                      "one 100 m window, or the instability evaluation was skipped: "
+                                                      "see running_safety.notes)")
+                                      : results::Json(out.empty() ? no_folder : "written"));
+  summary.set("charts", drawn);
   results::draw_all(charts);
   ev.chart_seconds = seconds_since(t1);
   spdlog::info("running safety: {} (Nadal limit {:.3g} at {:.1f} deg, mu {:.2g}{}; f0 {:.3g} Hz)",
@@ -720,6 +731,15 @@ ScenarioRunResult run_scenario(const Scenario& sc, const ScenarioRunOptions& o) 
     std::error_code ec;
     fs::create_directories(o.out_dir, ec);
     if (ec) throw InputError(o.out_dir + ": cannot create the output folder (" + ec.message() + ")");
+    // A previous run's files in the folder would be read as this run's when
+    // this one writes fewer (a failure, a shorter run): they go first.
+    for (const char* f : {"channels.csv", "summary.json", "yq.png", "yq.png.json", "sum_y_rms.png",
+                          "sum_y_rms.png.json", "contact_audit.csv", "contact_audit.png", "contact_audit.png.json"}) {
+      const fs::path p = fs::path(o.out_dir) / f;
+      if (!fs::is_regular_file(fs::symlink_status(p, ec))) continue;  // links and devices are the user's
+      if (!fs::remove(p, ec) || ec)
+        throw InputError(p.string() + ": cannot remove the previous run's file (" + ec.message() + ")");
+    }
   }
   const auto& m = sc.model;
   const bool audit = o.contact_audit.samples != 0;

@@ -120,6 +120,20 @@ void read_motion(const InputNode& root, double track_length, Scenario& sc) {
   sc.duration = root.positive("duration");
   if (m.speed.accel < 0 && m.speed.speed(sc.duration) <= 0)
     root.at("acceleration").fail("the speed would reach zero before the end of the run");
+  // Past the track's defined length the track continues as the extension of
+  // its end, without irregularities: legal (a long straight run), but not the
+  // track given, so the run says so.
+  const double s_end = m.speed.distance(sc.duration);
+  if (s_end > track_length * (1.0 + 1e-9)) {
+    const double v_avg = (s_end - m.speed.s0) / sc.duration;
+    const double t_leave = v_avg > 0.0 ? (track_length - m.speed.s0) / v_avg : 0.0;
+    sc.warnings.push_back(root.at("duration").where() + ": key 'duration': the run ends at track distance " +
+                          config::format_number(s_end) + " m, past the track's defined length " +
+                          config::format_number(track_length) + " m (left at about t = " +
+                          config::format_number(t_leave) + " s); beyond it the track is the extension of its "
+                          "end without irregularities: shorten the duration or lengthen the track");
+    spdlog::warn("{}", sc.warnings.back());
+  }
   sc.output_interval = root.has("output_interval") ? root.in_range("output_interval", 0.0, sc.duration, true) : 0.01;
   // Bounded output: the run keeps every sample in memory (RunHistory) and writes it (channels.csv).
   const double samples = std::floor(sc.duration / sc.output_interval) + 1.0;
@@ -299,8 +313,8 @@ void read_integrator(const InputNode& in, Scenario& sc) {
                std::string(o.max_step > 0.0 ? " and max_step" : "") + "; got " + config::format_number(v) + ")");
     o.min_step = v;
   }
-  if (in.has("max_steps")) o.max_steps = static_cast<long>(in.in_range("max_steps", 1, 1e9));
-  if (in.has("max_order")) o.max_order = static_cast<int>(in.in_range("max_order", 1, 5));
+  if (in.has("max_steps")) o.max_steps = in.integer_in_range("max_steps", 1, 1000000000);
+  if (in.has("max_order")) o.max_order = static_cast<int>(in.integer_in_range("max_order", 1, 5));
   if (in.has("atol_contact_modes")) o.atol_contact_modes = in.in_range("atol_contact_modes", 0.0, 1.0);
   if (auto sl = in.find("stability_limit_detection")) o.stability_limit_detection = sl->as_bool();
   o.jacobian = in.choice_or("jacobian", o.jacobian, {"fd", "assembled"});

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <string>
 
@@ -254,4 +255,50 @@ TEST_CASE("railsim run: --set on inline tracks and speed, variants without copie
   CHECK(number(js, "speed_initial") == 20.0);
   CHECK(js["overrides"][0] == "--set speed=20");  // the overrides are recorded
   CHECK(number(js["running_safety"]["zones"][0], "end") == 300.0);  // the straight section of the zones
+}
+
+TEST_CASE("railsim run: --set through a YAML alias changes that place only, past the track end a warning",
+          "[cli][run][robustness]") {
+  const std::string s = test::data_path("scenarios/single_wheelset_aliased_segments.yaml");
+  const std::string out = test::temp_dir("run_set_alias");
+  // segments: [&straight {length: 200}, *straight]; the second set to 300 m: 500 m of track, not 600.
+  auto r = test::run_railsim("run " + s + " --set 'track.segments[1].length=300' --out " + out);
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  json js = test::read_json(out + "/summary.json");
+  const auto& zones = js["running_safety"]["zones"];
+  REQUIRE(!zones.empty());
+  CHECK(number(zones[zones.size() - 1], "end") == 500.0);
+  CHECK(js["warnings"].empty());  // 40 m in 1 s: well inside the track
+  // 40 m/s for 15 s from 0: 600 m on a 400 m track: the run says where it leaves the track.
+  r = test::run_railsim("run " + s + " --set duration=15 --set output_interval=0.05 --out " + out);
+  REQUIRE(r.exit_code == 0);
+  js = test::read_json(out + "/summary.json");
+  REQUIRE(js["warnings"].size() == 1);
+  const std::string w = js["warnings"][0];
+  CHECK(w.find("key 'duration'") != std::string::npos);
+  CHECK(w.find("ends at track distance 600 m, past the track's defined length 400 m") != std::string::npos);
+  CHECK(w.find("t = 10 s") != std::string::npos);
+}
+
+TEST_CASE("railsim run: a rerun that fails leaves none of the previous run's files", "[cli][run][robustness]") {
+  const std::string s = test::data_path("scenarios/single_wheelset_aliased_segments.yaml");
+  const std::string out = test::temp_dir("run_stale");
+  auto r = test::run_railsim("run " + s + " --out " + out);
+  REQUIRE(r.exit_code == 0);
+  REQUIRE(std::filesystem::exists(out + "/yq.png"));
+  json js = test::read_json(out + "/summary.json");
+  CHECK(js["status"] == "ok");
+  // 40 m: less than one 100 m window of (Sum Y)_rms: the chart is not drawn and the summary says why.
+  CHECK(js["charts"]["yq.png"] == "written");
+  CHECK(std::string(js["charts"]["sum_y_rms.png"]).find("not drawn") == 0);
+  CHECK_FALSE(std::filesystem::exists(out + "/sum_y_rms.png"));
+  // The same folder, a run that fails numerically: only its own summary is there.
+  r = test::run_railsim("run " + s + " --set integrator.max_steps=1 --out " + out);
+  INFO(r.output);
+  CHECK(r.exit_code == 3);
+  js = test::read_json(out + "/summary.json");
+  CHECK(js["status"] == "failed");
+  for (const char* f : {"yq.png", "yq.png.json", "sum_y_rms.png"})
+    CHECK_FALSE(std::filesystem::exists(out + "/" + std::string(f)));
 }
