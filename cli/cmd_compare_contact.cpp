@@ -347,7 +347,7 @@ void register_compare_contact(CLI::App& app, CommandRunner& run) {
       ->check(CLI::Range(8, 400))
       ->capture_default_str();
   cmd->add_option("--reference-tolerance", a->reference_tolerance, "MIM reference: tangential solver tolerance")
-      ->check(CLI::Range(1e-12, 1e-3))
+      ->check(number_range(1e-12, 1e-3))
       ->capture_default_str();
   cmd->add_option("--map-points", a->map_points,
                   "Failure map: points per axis (creepage x spin); 0 = no map")

@@ -80,7 +80,7 @@ void register_contact(CLI::App& app, CommandRunner& run) {
                   "checks its own range, MIM also its memory)")
       ->check(CLI::Range(0, 4000));
   cmd->add_option("--tolerance", opts->tolerance, "Solver tolerance of iterative models (0 = model default)")
-      ->check(CLI::Range(0.0, 0.1));
+      ->check(number_range(0.0, 0.1));
   cmd->add_option("--extrapolation", opts->extrapolation,
                   "Grid extrapolation of model mim: richardson (default; from grid N and N/2) or none (the grid's "
                   "own forces, CONTACT's discretisation)")

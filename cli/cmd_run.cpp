@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "cli/commands.hpp"
+#include "cli/support_option_checks.hpp"
 #include "cli/support_scenario_overrides.hpp"
 #include "core/errors.hpp"
 #include "core/output_lock.hpp"
@@ -69,7 +70,7 @@ void register_run(CLI::App& app, CommandRunner& run) {
   cmd->add_option("--out", args->out, "Output folder (channels.csv, summary.json, yq.png, sum_y_rms.png)")
       ->capture_default_str();
   cmd->add_option("--speed-kmh", args->speed_kmh, "Speed [km/h] instead of the scenario's (0 < V <= 720)")
-      ->check(CLI::Range(0.001, 720.0));
+      ->check(number_range(0.001, 720.0));
   cmd->add_option("--set", args->sets,
                   "Override a scenario key: key=value, dotted path (contact.material.mu=0.2, "
                   "track.segments[2].radius=500, initial[ws1.lateral]=0.007); repeatable");

@@ -23,6 +23,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "cli/support_option_checks.hpp"
 #include "config/yaml_input.hpp"
 #include "contact/geometry/wheel_rail_geometry.hpp"
 #include "core/errors.hpp"
@@ -77,6 +78,7 @@ int run_wheelset_contact(const WheelsetContactArgs& a) {
   for (const auto& n : root.at("positions").elements()) {
     n.allow_only({"y", "yaw", "Fz", "roll", "omega"});
     engine::WheelsetContactPosition p;
+    p.where = n.where() + ": key 'positions[" + std::to_string(pos.size()) + "]'";
     p.y = n.in_range("y", -0.03, 0.03);
     p.yaw = n.has("yaw") ? n.in_range("yaw", -0.1, 0.1) : 0.0;
     p.Fz = n.in_range("Fz", 0.0, 1e6, true);
@@ -135,7 +137,7 @@ void register_wheelset_contact(CLI::App& app, CommandRunner& run) {
   cmd->add_option("--out", a->out, "Output CSV file")->capture_default_str();
   cmd->add_option("--grid", a->grid, "Elements across the minor axis (mim; 0 = model default)")
       ->check(CLI::Range(0, 400));
-  cmd->add_option("--tolerance", a->tolerance, "Solver tolerance (mim; 0 = model default)")->check(CLI::Range(0.0, 0.1));
+  cmd->add_option("--tolerance", a->tolerance, "Solver tolerance (mim; 0 = model default)")->check(number_range(0.0, 0.1));
   cmd->callback([a, &run] { run = [a] { return run_wheelset_contact(*a); }; });
 }
 

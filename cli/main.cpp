@@ -4,12 +4,14 @@
 // numerical failure. `railsim --version` prints
 // "railsim X.Y.Z" (as help2man expects); `railsim version` says more.
 // Every numeric option is refused unless finite (cli/support_option_checks.hpp).
+// SIGXFSZ is ignored, so a file past the size limit is a failed write (exit 2).
 // Under mpirun, MPI is started here for the whole run (engine::MpiSession).
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
 #include <CLI/CLI.hpp>
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <iostream>
@@ -23,6 +25,9 @@
 int main(int argc, char** argv) {
   // MPI, when launched by mpirun, for the whole run (finalised when main returns).
   const railsim::engine::MpiSession mpi(&argc, &argv);
+  // A file that outgrows the process's size limit (ulimit -f) is a failed
+  // write, reported by the writer with its file name (exit 2), not a kill by SIGXFSZ.
+  std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{"railsim: railway vehicle dynamics with pluggable wheel-rail contact"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("railsim ") + railsim::kVersion, "Print the version and exit");

@@ -2,6 +2,7 @@
 #include "cli/support_option_checks.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 
 #include "core/errors.hpp"
@@ -38,6 +39,23 @@ void add_checks(CLI::App& cmd) {
 }  // namespace
 
 void add_common_checks(CLI::App& app) { add_checks(app); }
+
+CLI::Validator number_range(double lo, double hi) {
+  char range[80];
+  std::snprintf(range, sizeof range, "[%.6g, %.6g]", lo, hi);
+  const std::string text = range;
+  return CLI::Validator(
+      [lo, hi, text](std::string& s) -> std::string {
+        const char* b = s.c_str();
+        char* e = nullptr;
+        const double v = std::strtod(b, &e);
+        if (e == b || *e != '\0') return "expected a number in " + text + " (got '" + s + "')";
+        if (!std::isfinite(v)) return "expected a finite number (got '" + s + "')";
+        if (!(v >= lo && v <= hi)) return "expected a number in " + text + " (got " + s + ")";
+        return {};
+      },
+      "NUMBER in " + text, "range");
+}
 
 std::string subcommand_names(const CLI::App& app) {
   std::string out;

@@ -19,6 +19,11 @@ void add_common_checks(CLI::App& app);
 // ("" when there is none), skipping the values of the top-level options.
 std::string unknown_subcommand(const CLI::App& app, int argc, const char* const* argv);
 
+// A number in [lo, hi], the bounds printed as given ("--reference-tolerance:
+// expected a number in [1e-12, 0.001] (got 0)"); CLI::Range prints them with
+// six decimals, so a bound of 1e-12 reads as 0.000000.
+CLI::Validator number_range(double lo, double hi);
+
 // The registry entry of the tangential model `name` given by `option` (no
 // model is built: mim_table's table is not loaded); an unknown name is an
 // InputError "OPTION: unknown contact model 'x' (known models: ...)".

@@ -60,7 +60,83 @@ std::string prefix_text(const std::vector<std::string>& path, std::size_t n) {
   return reader_path(std::vector<std::string>(path.begin(), path.begin() + static_cast<std::ptrdiff_t>(n)));
 }
 
-void apply(YAML::Node root, const ScenarioOverride& o) {
+// How many times `node` (by identity) appears in the tree under `root`: more
+// than once when the file shares it through a YAML anchor and aliases.
+int occurrences(const YAML::Node& root, const YAML::Node& node) {
+  if (root.is(node)) return 1;
+  int n = 0;
+  if (root.IsMap())
+    for (const auto& kv : root) n += occurrences(kv.second, node);
+  else if (root.IsSequence())
+    for (const auto& v : root) n += occurrences(v, node);
+  return n;
+}
+
+// Whether a node on the override's path (or the node it replaces) is shared
+// through an alias: editing it in place would edit every alias of the anchor.
+bool path_is_shared(const YAML::Node& root, const std::vector<std::string>& path) {
+  YAML::Node cur;
+  cur.reset(root);
+  for (const std::string& c : path) {
+    YAML::Node next;
+    if (is_index(c) && cur.IsSequence()) {
+      const std::size_t idx = std::stoul(c.substr(1, c.size() - 2));
+      if (idx >= cur.size()) return false;
+      next.reset(cur[idx]);
+    } else if (!is_index(c) && cur.IsMap() && cur[c].IsDefined()) {
+      next.reset(cur[c]);
+    } else {
+      return false;
+    }
+    if (occurrences(root, next) > 1) return true;
+    cur.reset(next);
+  }
+  return false;
+}
+
+// The tree with the path's containers copied (one level each, children
+// shared) and the copies linked: the same tree for the reader, but the path
+// no longer runs through a node an alias shares. yaml-cpp's assignment to an
+// existing node rebinds that node everywhere it appears, so the copies are
+// built fresh and filled key by key. The copies lose their own positions;
+// every other node keeps its.
+YAML::Node unshare_path(const YAML::Node& node, const std::vector<std::string>& path, std::size_t k) {
+  if (k == path.size() || !(node.IsMap() || node.IsSequence())) return node;
+  const std::string& c = path[k];
+  if (node.IsSequence()) {
+    if (!is_index(c)) return node;
+    const std::size_t idx = std::stoul(c.substr(1, c.size() - 2));
+    YAML::Node copy(YAML::NodeType::Sequence);
+    for (std::size_t i = 0; i < node.size(); ++i) {
+      if (i != idx) {
+        copy.push_back(node[i]);
+        continue;
+      }
+      YAML::Node own(YAML::NodeType::Null);  // a node of its own, so that assigning to it rebinds it alone
+      own = unshare_path(node[i], path, k + 1);
+      copy.push_back(own);
+    }
+    return copy;
+  }
+  YAML::Node copy(YAML::NodeType::Map);
+  for (const auto& kv : node) {
+    const bool on_path = kv.first.IsScalar() && kv.first.Scalar() == c;
+    copy[kv.first] = on_path ? unshare_path(kv.second, path, k + 1) : kv.second;
+  }
+  return copy;
+}
+
+void edit(YAML::Node root, const ScenarioOverride& o);
+
+// The override applied to the tree `root` (edited in place, or, when its
+// path runs through an aliased node, rebuilt along the path first).
+YAML::Node apply(YAML::Node root, const ScenarioOverride& o) {
+  if (path_is_shared(root, o.path)) root = unshare_path(root, o.path, 0);
+  edit(root, o);
+  return root;
+}
+
+void edit(YAML::Node root, const ScenarioOverride& o) {
   YAML::Node value;
   try {
     value = YAML::Load(o.value);
@@ -145,7 +221,7 @@ LoadedScenario load_scenario_with_overrides(const std::string& path, const std::
   // The overrides edit the parsed tree in place (no YAML::Clone: a clone loses
   // the nodes' file positions, and every message would say line 1).
   YAML::Node root = original.raw();
-  for (const auto& o : overrides) apply(root, o);
+  for (const auto& o : overrides) root = apply(root, o);
   config::InputNode node(root, path, "");
   try {
     engine::Scenario sc = engine::load_scenario(node, std::filesystem::path(path).parent_path().string());

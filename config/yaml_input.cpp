@@ -221,6 +221,13 @@ long InputNode::as_integer() const {
   return static_cast<long>(v);
 }
 
+long InputNode::as_integer_in_range(long lo, long hi) const {
+  const double v = as_number();
+  if (std::floor(v) != v || v < static_cast<double>(lo) || v > static_cast<double>(hi))
+    fail("expected a whole number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "] (got " + text() + ")");
+  return static_cast<long>(v);
+}
+
 bool InputNode::as_bool() const {
   if (node_.IsScalar()) {
     const std::string& s = node_.Scalar();

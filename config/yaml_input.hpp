@@ -56,6 +56,8 @@ class InputNode {
   // lo <= v <= hi; lo_open / hi_open make that bound strict.
   double as_in_range(double lo, double hi, bool lo_open = false, bool hi_open = false) const;
   long as_integer() const;
+  // A whole number with lo <= v <= hi ("expected a whole number in [lo, hi]").
+  long as_integer_in_range(long lo, long hi) const;
   bool as_bool() const;
   std::string as_string() const;
   std::vector<double> as_numbers() const;      // a sequence of finite numbers
@@ -68,6 +70,7 @@ class InputNode {
                   bool hi_open = false) const {
     return at(key).as_in_range(lo, hi, lo_open, hi_open);
   }
+  long integer_in_range(std::string_view key, long lo, long hi) const { return at(key).as_integer_in_range(lo, hi); }
   std::string string(std::string_view key) const { return at(key).as_string(); }
   double number_or(std::string_view key, double fallback) const;
   std::string string_or(std::string_view key, const std::string& fallback) const;

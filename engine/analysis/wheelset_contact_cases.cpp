@@ -26,6 +26,13 @@ std::string num(double v) {
 
 }  // namespace
 
+namespace {
+// One position: both wheels' contact points, normal loads and creep forces.
+WheelsetContactResult solve_position(const WheelsetContactSetup& s, const contact::WheelRailGeometry& geo,
+                                     const contact::TangentialModel& model, contact::TangentialWorkspace* ws,
+                                     double Es, const WheelsetContactPosition& pos);
+}  // namespace
+
 std::vector<WheelsetContactResult> wheelset_contact(const WheelsetContactSetup& s,
                                                     const std::vector<WheelsetContactPosition>& positions) {
   if (!(s.speed > 0.0 && std::isfinite(s.speed))) throw InputError("wheelset contact: speed must be positive");
@@ -39,7 +46,24 @@ std::vector<WheelsetContactResult> wheelset_contact(const WheelsetContactSetup& 
   auto ws = model->make_workspace();
   const double Es = s.material.combined_modulus();
   std::vector<WheelsetContactResult> out;
-  for (const WheelsetContactPosition& pos : positions) {
+  for (std::size_t k = 0; k < positions.size(); ++k) {
+    try {
+      out.push_back(solve_position(s, geo, *model, ws.get(), Es, positions[k]));
+    } catch (const std::exception& e) {
+      // A position that cannot be solved is a position the user gave: bad input, named where it was given.
+      const std::string& w = positions[k].where;
+      throw InputError((w.empty() ? "position " + std::to_string(k) : w) + ": " + e.what());
+    }
+  }
+  return out;
+}
+
+namespace {
+
+WheelsetContactResult solve_position(const WheelsetContactSetup& s, const contact::WheelRailGeometry& geo,
+                                     const contact::TangentialModel& model, contact::TangentialWorkspace* ws,
+                                     double Es, const WheelsetContactPosition& pos) {
+  {
     if (!(pos.Fz > 0.0 && std::isfinite(pos.Fz)))
       throw InputError("wheelset contact: position y = " + num(pos.y) + " m: Fz must be positive (got " + num(pos.Fz) + ")");
     WheelsetContactResult r;
@@ -113,7 +137,7 @@ std::vector<WheelsetContactResult> wheelset_contact(const WheelsetContactSetup& 
           in.creep = P.creep;
           in.material = s.material;
           in.rolling_speed = s.speed;
-          P.forces = model->solve(in, ws.get());
+          P.forces = model.solve(in, ws);
           const double ct = std::cos(g.contact_angle), st = std::sin(g.contact_angle);
           X += P.forces.Fx - P.forces.Fy * pos.yaw * ct;
           Y += P.forces.Fx * pos.yaw + P.forces.Fy * ct - sg * P.N * st;
@@ -153,9 +177,10 @@ std::vector<WheelsetContactResult> wheelset_contact(const WheelsetContactSetup& 
                              (i == 0 ? "left" : "right") + " wheel's vertical force " + num(pos.Fz) +
                              " N is not reached (the creep forces carry it off, mu tan(delta) near 1?)");
     }
-    out.push_back(std::move(r));
+    return r;
   }
-  return out;
 }
+
+}  // namespace
 
 }  // namespace railsim::engine

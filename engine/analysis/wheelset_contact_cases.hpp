@@ -52,6 +52,9 @@ struct WheelsetContactPosition {
   bool has_roll = false;
   double omega = 0.0;            // [rad/s], used when has_omega (else V / r0)
   bool has_omega = false;
+  // Where the position was given ("FILE:LINE: key 'positions[i]'"), for the
+  // messages of a position that cannot be solved; empty: "position i".
+  std::string where;
 };
 
 struct WheelsetContactPatch {

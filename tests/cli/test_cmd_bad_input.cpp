@@ -106,6 +106,9 @@ TEST_CASE("railsim on bad scenario files: exit 2 naming file, line, key and rang
       {"table row with a negative normal force", "run " + bad("scenario_table_negative_n0.yaml") + out,
        {"table_negative_n0.dat:5: column 2 (N0 [N])", "(0, 1e+07]", "got -60000"}},
       {"deep nesting", "run " + bad("deep_nesting.yaml") + out, {"deep_nesting.yaml:2: YAML nested too deeply"}},
+      {"max_steps 2.5", "run " + bad("scenario_max_steps_fraction.yaml") + out,
+       {"scenario_max_steps_fraction.yaml:10: key 'integrator.max_steps'", "whole number in [1, 1000000000]",
+        "got 2.5"}},
   });
   // The vehicle and track files of a scenario, swapped in with --set: the error is in that file.
   const std::string sc = "run '" + test::source_path("scenarios/single_wheelset.yaml") + "'" + out;

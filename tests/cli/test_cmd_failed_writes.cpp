@@ -111,4 +111,12 @@ TEST_CASE("railsim run under a file-size limit (as a disk filling up): exit 2 na
   CHECK(lim.exit_code == 2);
   CHECK(lim.output.find(dir + "/limited/") != std::string::npos);
   CHECK(lim.output.find(": write failed (File too large)") != std::string::npos);
+  // Without the trap: SIGXFSZ's default action would kill railsim (exit 153, no message); it ignores the
+  // signal itself, so the limit is a failed write as above.
+  const auto sig = test::run_shell("sh -c \"ulimit -f 4; exec " + kBinary + " run " + q(kWheelset) + " --out " +
+                                   q(dir + "/limited_nosig") + "\" 2>&1");
+  INFO(sig.output);
+  CHECK(sig.exit_code == 2);
+  CHECK(sig.output.find(dir + "/limited_nosig/") != std::string::npos);
+  CHECK(sig.output.find(": write failed (File too large)") != std::string::npos);
 }
