@@ -281,7 +281,14 @@ int run_critical_speed(const CriticalSpeedArgs& a) {
   if (reduction_given) spec = contact::parse_reduction_spec(a.reduction, "--reduction");
   std::vector<contact::ReductionSpec> study_entries;
   if (!a.reductions.empty()) study_entries = contact::parse_reduction_list(a.reductions, "--reductions");
-  if (!a.model.empty()) tangential_model_option("--model", a.model);
+  if (!a.model.empty()) {
+    tangential_model_option("--model", a.model);
+    try {
+      (void)engine::with_contact(base, a.model, nullptr);  // a model the scenario's contact can feed
+    } catch (const InputError& e) {
+      throw InputError("--model " + a.model + ": " + e.what());
+    }
+  }
   std::error_code ec;
   fs::create_directories(a.out, ec);
   if (ec) throw InputError("--out " + a.out + ": cannot create the folder (" + ec.message() + ")");
@@ -295,8 +302,14 @@ int run_critical_speed(const CriticalSpeedArgs& a) {
     std::stringstream ss(a.models);
     for (std::string n; std::getline(ss, n, ',');)
       if (!n.empty()) names.push_back(n);
-    for (const auto& n : names)
+    for (const auto& n : names) {
       tangential_model_option("--models", n);
+      try {
+        (void)engine::with_contact(base, n, nullptr);
+      } catch (const InputError& e) {
+        throw InputError("--models: " + std::string(e.what()));
+      }
+    }
     // Each model's files as soon as it is done (rank 0): a later model's failure keeps them.
     std::optional<results::CsvWriter> csv;
     if (mpi.rank == 0)
@@ -395,19 +408,24 @@ void register_critical_speed(CLI::App& app, CommandRunner& run) {
   cmd->add_option("--out", a->out, "Output folder")->capture_default_str();
   cmd->add_option("--model", a->model,
                   "Tangential contact model overriding the scenario (coefficients or a registry name: " +
-                      contact::tangential_model_names() + ")");
+                      contact::tangential_model_names() + ")")
+      ->check(non_empty_value());
   cmd->add_option("--reduction", a->reduction,
                   "Reduction factors: none, elastic_fe, elastoplastic_fe, third_body, one number k, k11,k22,k23, or a "
                   "third-body layer layer:h=<m>,G3=<Pa>[,tau_c=<Pa>] (factors computed by the exact solver for the "
-                  "scenario's patch)");
+                  "scenario's patch)")
+      ->check(non_empty_value());
   cmd->add_option("--reductions", a->reductions,
                   "Study: the analysis once per entry of this list of --reduction forms, in one resumable job "
                   "(e.g. 1,0.9,0.8,0.7,0.6,0.5,elastic_fe,elastoplastic_fe,layer:h=125e-6,G3=820e6; a triple in "
-                  "brackets (0.72,0.56,0.56), or entries separated by ';')");
+                  "brackets (0.72,0.56,0.56), or entries separated by ';')")
+      ->check(non_empty_value());
   cmd->add_option("--cache-dir", a->cache_dir,
                   "Cache folder of computed layer factors (default: $RAILSIM_CACHE_DIR, else ~/.cache/railsim)");
   cmd->add_flag("--compare-models", a->compare_models, "Run once per contact model (see --models) and tabulate");
-  cmd->add_option("--models", a->models, "Models for --compare-models, comma-separated")->capture_default_str();
+  cmd->add_option("--models", a->models, "Models for --compare-models, comma-separated")
+      ->check(non_empty_value())
+      ->capture_default_str();
   cmd->add_flag("!--no-baseline", a->baseline, "With --reduction, skip the unreduced comparison run");
   // Defaults of the sweep settings: the scenario's `critical_speed` section, else
   // engine::CriticalSpeedSettings (80..300 km/h in 20 km/h steps, 6 s, 8 / 0.5 mm, 0.5 mm, 0.5 m/s^2).

@@ -4,6 +4,7 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <set>
 
 #include "contact/hertz.hpp"
@@ -44,6 +45,15 @@ ContactCase read_case(const config::InputNode& n, const contact::Material& mater
   } catch (const InputError& e) {
     if (std::string(e.what()).find(n.file()) == 0) throw;  // already located
     n.fail(e.what());
+  }
+  // Wheel-rail patches lie within a/b 0.05-20; past [0.01, 100] the solvers'
+  // grids (elements across the minor axis) grow with the ratio into minutes and gigabytes.
+  const double ratio = c.input.patch.a / c.input.patch.b;
+  if (!(ratio >= 0.01 && ratio <= 100.0)) {
+    char buf[200];
+    std::snprintf(buf, sizeof buf,
+                  "patch aspect ratio a/b = %.4g outside [0.01, 100] (wheel-rail patches lie within 0.05-20)", ratio);
+    n.at(curv ? "A" : "a").fail(buf);
   }
   c.input.creep = {n.number("xi"), n.number("eta"), n.number("phi")};
   c.input.material = material;

@@ -40,6 +40,15 @@ void add_checks(CLI::App& cmd) {
 
 void add_common_checks(CLI::App& app) { add_checks(app); }
 
+const CLI::Validator& non_empty_value() {
+  static const CLI::Validator v(
+      [](std::string& s) -> std::string {
+        return s.find_first_not_of(" ,;") == std::string::npos ? "expected a value (got '" + s + "')" : std::string();
+      },
+      "NONEMPTY", "non-empty value");
+  return v;
+}
+
 CLI::Validator number_range(double lo, double hi) {
   char range[80];
   std::snprintf(range, sizeof range, "[%.6g, %.6g]", lo, hi);

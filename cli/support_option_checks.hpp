@@ -24,6 +24,10 @@ std::string unknown_subcommand(const CLI::App& app, int argc, const char* const*
 // six decimals, so a bound of 1e-12 reads as 0.000000.
 CLI::Validator number_range(double lo, double hi);
 
+// A value that is not empty ("--models: expected a value (got '')"): an
+// empty list or name would otherwise be read as "not given".
+const CLI::Validator& non_empty_value();
+
 // The registry entry of the tangential model `name` given by `option` (no
 // model is built: mim_table's table is not loaded); an unknown name is an
 // InputError "OPTION: unknown contact model 'x' (known models: ...)".

@@ -282,6 +282,11 @@ std::string InputNode::as_existing_file(const std::string& base_dir) const {
   if (!v.empty() && !std::filesystem::path(v).is_absolute() && !base_dir.empty())
     path = (std::filesystem::path(base_dir) / v).lexically_normal().string();
   std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    fail("'" + v + "' is a folder; expected a file" +
+         (path != v ? " (" + path + ", relative to the folder of " + file_ + ")" : std::string()));
+  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+    fail("'" + v + "' is not a regular file (a device or a pipe); expected a file");
   if (!std::filesystem::is_regular_file(path, ec))
     fail("file '" + v + "' not found" +
          (path != v ? " (looked for " + path + ", relative to the folder of " + file_ + ")" : std::string()));

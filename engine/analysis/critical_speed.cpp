@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <limits>
 
+#include "contact/registry.hpp"
 #include "core/errors.hpp"
 #include "engine/analysis/state_store.hpp"
 #include "engine/linearisation.hpp"
@@ -251,8 +252,21 @@ const char* point_state_name(PointState s) {
   return "settled";
 }
 
+namespace {
+// A model that solves a contact patch needs the scenario to give one: conical
+// wheels with prescribed creep coefficients only work with 'coefficients'.
+void check_model_has_patch(const Scenario& sc, const std::string& model) {
+  if (model.empty() || contact::find_tangential_model(model).geometry_coefficients || sc.nominal_patch.Fz > 0.0) return;
+  throw InputError("tangential model '" + model + "' needs a contact patch, and scenario '" + sc.name + "' (" +
+                   sc.file + ") gives none: its conical wheels carry prescribed creep coefficients only. Add "
+                   "contact.patch {a, b, N_ref} or geometry curvatures (A, B), use a table or profiles geometry, "
+                   "or keep the model 'coefficients'");
+}
+}  // namespace
+
 Scenario with_contact(const Scenario& scenario, const std::string& tangential_model,
                       const contact::ReductionFactors* reduction) {
+  check_model_has_patch(scenario, tangential_model);
   Scenario s = scenario;
   CouplingOptions o = s.model.coupling.options();
   if (!tangential_model.empty()) o.tangential = tangential_model;
@@ -273,6 +287,7 @@ Scenario with_contact(const Scenario& scenario, const std::string& tangential_mo
 
 Scenario with_reduction(const Scenario& scenario, const contact::ReductionSpec& spec, const std::string& where,
                         const std::string& cache_dir, const std::string& tangential_model) {
+  check_model_has_patch(scenario, tangential_model);
   Scenario s = scenario;
   if (!tangential_model.empty()) {
     CouplingOptions o = s.model.coupling.options();

@@ -245,6 +245,13 @@ ContactSection read_contact(const InputNode& c, const std::string& base, Scenari
     cs.patch_shape = PatchShape::semi_hertz;
   }
   co.tangential = c.string_or("tangential", "coefficients");
+  if (auto t = c.find("tangential")) {  // an unknown name, named where it was given
+    try {
+      contact::find_tangential_model(co.tangential);
+    } catch (const InputError& e) {
+      t->fail(e.what());
+    }
+  }
   co.saturation = c.choice_or("saturation", "none", {"none", "she"});
   if (auto r = c.find("reduction")) {
     cs.reduction_where = r->where() + ": key 'reduction'";

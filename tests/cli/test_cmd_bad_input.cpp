@@ -125,6 +125,11 @@ TEST_CASE("railsim on bad scenario files: exit 2 naming file, line, key and rang
        {"vehicle_inertia_triangle.yaml:4: key 'bodies[0].inertia'", "triangle inequality"}},
       {"a vehicle key twice", sc + " --set vehicle=" + bad("vehicle_duplicate_key.yaml"),
        {"vehicle_duplicate_key.yaml:4: key 'bodies[0].mass': given twice (first on line 4)"}},
+      {"a folder as the vehicle", sc + " --set vehicle=" + test::data_path("bad_input"),
+       {"key 'vehicle': '", "bad_input' is a folder; expected a file"}},
+      {"an unknown tangential model", sc + " --set contact.tangential=nosuch",
+       {"--set contact.tangential=nosuch: ", "key 'contact.tangential': unknown contact model 'nosuch'",
+        "known models:"}},
       {"a track key twice", sc + " --set track=" + bad("track_duplicate_key.yaml"),
        {"track_duplicate_key.yaml:5: key 'segments': given twice (first on line 3)"}},
       // A wheel profile in mm under a metres header, in a profile-geometry scenario.
@@ -153,6 +158,8 @@ TEST_CASE("railsim contact on bad case files: exit 2 naming file, line, key and 
        {"contact_mu_zero.yaml:2: key 'material.mu': expected a number in (0, 2] (got 0)"}},
       {"key twice", "contact " + bad("contact_duplicate_key.yaml") + out,
        {"contact_duplicate_key.yaml:4: key 'cases[0].id': given twice (first on line 4)"}},
+      {"a/b 1000 with mim", "contact " + bad("contact_aspect_1000.yaml") + " --model mim --out '" + dir + "/a.csv'",
+       {"contact_aspect_1000.yaml:4: key 'cases[0].a'", "a/b = 1000 outside [0.01, 100]"}},
       // The allowed maximum grid of MIM on a 6 x 4 mm patch: about 29 GB, refused before allocating.
       {"mim --grid 4000", "contact " + bad("contact_one_case.yaml") + " --model mim --grid 4000 --no-timing --out '" +
                               dir + "/m.csv'",

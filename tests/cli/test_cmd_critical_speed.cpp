@@ -108,6 +108,21 @@ TEST_CASE("railsim critical-speed rejects bad input with exit code 2", "[cli][cr
   CHECK(r.exit_code == 2);
   r = run("--duration 0.01");
   CHECK(r.exit_code == 2);
+  // Empty lists are not "not given"; a model the scenario's contact cannot feed is named before any work.
+  for (const char* opt : {"--models", "--reductions", "--reduction", "--model"}) {
+    r = run(std::string("--compare-models ") + opt + " ''");
+    INFO(opt << "\n" << r.output);
+    CHECK(r.exit_code == 2);
+    CHECK(r.output.find(std::string(opt) + ": expected a value (got '')") != std::string::npos);
+  }
+  r = run_railsim("critical-speed '" + railsim::test::source_path("scenarios/single_wheelset.yaml") +
+                  "' --model chopaya --out '" + dir + "/o'");
+  CHECK(r.exit_code == 2);
+  CHECK(r.output.find("--model chopaya: tangential model 'chopaya' needs a contact patch") != std::string::npos);
+  r = run_railsim("critical-speed '" + railsim::test::source_path("scenarios/single_wheelset.yaml") +
+                  "' --compare-models --models coefficients,fastsim --out '" + dir + "/o'");
+  CHECK(r.exit_code == 2);
+  CHECK(r.output.find("--models: tangential model 'fastsim' needs a contact patch") != std::string::npos);
 
   // A scenario whose critical_speed section has an unknown key and a bad range.
   std::string text = railsim::test::read_text(kScenario);

@@ -94,7 +94,7 @@ TEST_CASE("a file named in YAML resolves against the reader's folder or names wh
   CHECK(doc.at("abs").as_existing_file("/elsewhere") == dir + "/t.yaml");
   const std::string m = error_of([&] { doc.at("missing").as_existing_file(dir); });
   CHECK(m.find("s.yaml:3: key 'missing': file 'no.yaml' not found (looked for " + dir + "/no.yaml") != std::string::npos);
-  // A folder is not a file.
-  CHECK(error_of([&] { doc.at("dir").as_existing_file(dir); }).find("key 'dir': file '.' not found") !=
+  // A folder is not a file, and the message says it is a folder (not "not found").
+  CHECK(error_of([&] { doc.at("dir").as_existing_file(dir); }).find("key 'dir': '.' is a folder; expected a file") !=
         std::string::npos);
 }
