@@ -72,8 +72,21 @@ ContactForces Fastrip::compute(const ContactInput& in, TangentialWorkspace* /*ws
   const ReductionFactors& k = in.reduction;
   const double pi2 = kPi * kPi;
   // Strip compliances (step 3) and spin flexibilities (step 4), grid-consistent.
-  const double Kx = pi2 / (2.0 * G * C.C11 * k.k11) * k_scale_;
-  const double Ky = pi2 / (2.0 * G * C.C22 * k.k22) * k_scale_;
+  double Kx = pi2 / (2.0 * G * C.C11 * k.k11) * k_scale_;
+  double Ky = pi2 / (2.0 * G * C.C22 * k.k22) * k_scale_;
+  {
+    // Saturated direction (step 2b): Kx, Ky blended toward one creepage-weighted
+    // compliance Kc, by w = min(1, f / 3), f = |(xi, eta)| / |(xi*, eta*)|.
+    const double xi = in.creep.xi, eta = in.creep.eta, c2 = a * b;
+    const double xs = mu * Fz / (G * c2 * C.C11 * k.k11), es = mu * Fz / (G * c2 * C.C22 * k.k22);
+    const double n2 = xi * xi + eta * eta;
+    if (n2 > 0.0 && xs > 0.0) {
+      const double w = std::min(1.0, std::sqrt(n2) / (3.0 * std::hypot(xs, es)));
+      const double Kc = n2 / (xi * xi / Kx + eta * eta / Ky);
+      Kx = (1.0 - w) * Kx + w * Kc;
+      Ky = (1.0 - w) * Ky + w * Kc;
+    }
+  }
   const double L3 = kPi * a * std::sqrt(a / b) / (4.0 * G * C.C23 * k.k23) * l3_scale_;
   const double p0 = 3.0 * Fz / (2.0 * kPi * a * b) * load_scale_;
   const double wx = in.creep.xi / Kx;
