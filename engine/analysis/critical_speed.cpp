@@ -107,6 +107,22 @@ std::vector<double> point_row(double v, Branch b, const PointOutcome& r) {
           r.numerical_failure ? 2.0 : (r.failed ? 1.0 : 0.0)};
 }
 
+// The finished points as read back (a resumed sweep reads them from its
+// files): a value that cannot come from a run (not finite, a "down" or
+// "failed" column out of its codes) means a damaged file, not a result.
+const std::vector<SweepResult>& checked_points(const std::vector<SweepResult>& rows, const std::string& file) {
+  for (const SweepResult& r : rows) {
+    bool ok = r.values.size() == kPointColumns.size();
+    for (std::size_t i = 0; ok && i < r.values.size(); ++i) ok = std::isfinite(r.values[i]);
+    ok = ok && r.values[0] > 0.0 && (r.values[1] == 0.0 || r.values[1] == 1.0) && r.values[2] >= 0.0 &&
+         r.values[3] >= 0.0 && (r.values[5] == 0.0 || r.values[5] == 1.0 || r.values[5] == 2.0);
+    if (!ok)
+      throw InputError(file + ": point '" + r.key + "' has a value no run gives (not finite, or a column out of its "
+                       "range): a damaged file; delete its line (or the file and its .part files) to compute it again");
+  }
+  return rows;
+}
+
 BifurcationPoint point_of(const SweepResult& r) {
   BifurcationPoint p;
   p.speed = r.values[0];
@@ -314,7 +330,7 @@ BifurcationResult bifurcation_sweep(const Scenario& scenario, const BifurcationO
   const SweepPlan plan = sweep_plan(o);
   if (o.continuation) return continuation_sweep(scenario, o, plan, points_csv);
   const auto fn = [&](const SweepPoint& p) { return run_sweep_point(scenario, o, plan, p, nullptr); };
-  return collect(run_sweep(plan.points, fn, sweep_options(o, points_csv, o.use_mpi)), o);
+  return collect(checked_points(run_sweep(plan.points, fn, sweep_options(o, points_csv, o.use_mpi)), points_csv), o);
 }
 
 namespace {
@@ -389,6 +405,7 @@ BifurcationResult continuation_sweep(const Scenario& scenario, const Bifurcation
   std::vector<SweepResult> rows = run_sweep(
       plan.points, [&](const SweepPoint& p) { return run_sweep_point(scenario, o, plan, p, &states); },
       sweep_options(o, points_csv + ".sweep.csv", false));
+  checked_points(rows, points_csv + ".sweep.csv");
 
   // Phase 2: the chain below V_h. Down rows in descending speed (the order of `points`).
   std::vector<SweepResult*> down;
@@ -400,6 +417,7 @@ BifurcationResult continuation_sweep(const Scenario& scenario, const Bifurcation
   for (std::size_t i = 0; i < down.size() && is_hunting(point_of(*down[i]), o); ++i) lowest = static_cast<long>(i);
   const std::string chain_csv = points_csv + ".chain.csv";
   std::vector<SweepResult> chain = read_finished_points(chain_csv, kPointColumns.size());
+  checked_points(chain, chain_csv);
   if (lowest >= 0 && static_cast<std::size_t>(lowest) + 1 < down.size()) {
     const SweepResult& vh = *down[static_cast<std::size_t>(lowest)];
     std::string from = vh.key;

@@ -320,6 +320,13 @@ TEST_CASE("bifurcation sweep: numerical failures and runs too short give no crit
     CHECK(r.undetermined.find("172.8 km/h") != std::string::npos);
     CHECK(r.undetermined.find("numerical failure") != std::string::npos);
   }
+  SECTION("a resumed sweep refuses a damaged points file instead of reading a verdict from it") {
+    const std::string out = railsim::test::temp_dir("damaged_points") + "/points.csv";
+    std::ofstream(out) << "index,key,speed_m_s,down,amplitude_m,frequency_hz,growth,failed\n"
+                          "0,down:48,48,1,0.004,2.1,0,0\n1,down:46,46,1,nan,2.0,0,0\n2,down:44,44,1,0.0001,0,0,0\n";
+    CHECK_THROWS_WITH(bifurcation_sweep(base, o, out),
+                      Catch::Contains("points.csv: point 'down:46'") && Catch::Contains("damaged file"));
+  }
   SECTION("runs too short to show a cycle in their tail") {
     o.duration = 0.5;  // tail 0.15 s: less than one hunting half-cycle (about 2-3 Hz here)
     const auto r = bifurcation_sweep(base, o, railsim::test::temp_dir("too_short") + "/points.csv");
