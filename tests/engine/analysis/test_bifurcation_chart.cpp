@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "engine/analysis/bifurcation_chart.hpp"
+#include "flange_sweep.hpp"
 #include "test_support.hpp"
 
 using namespace railsim::engine;
@@ -142,13 +143,7 @@ TEST_CASE("ramping chart names the start speed and marks where the critical spee
 
 TEST_CASE("a sweep reports the limit cycle at its fold", "[chart][critical_speed]") {
   const Scenario sc = load_scenario(railsim::test::data_path("scenarios/single_wheelset_flange.yaml"));
-  BifurcationOptions o;
-  o.v_min = 44.0;
-  o.v_max = 48.0;
-  o.v_step = 2.0;
-  o.duration = 6.0;
-  o.up_branch = false;
-  o.threads = 2;
+  BifurcationOptions o = railsim::test::flange_sweep_options();
   const auto r = bifurcation_sweep(sc, o, railsim::test::temp_dir("fold") + "/points.csv");
   REQUIRE(std::isfinite(r.nonlinear_critical_speed));
   for (const auto& p : r.points)

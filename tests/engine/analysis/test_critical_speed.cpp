@@ -15,6 +15,7 @@
 #include "config/yaml_input.hpp"
 #include "engine/linearisation.hpp"
 #include "engine/io/scenario.hpp"
+#include "flange_sweep.hpp"
 #include "test_support.hpp"
 
 using namespace railsim::engine;
@@ -296,13 +297,7 @@ TEST_CASE("linear critical speed: an undamped mode at the range start is not a l
 TEST_CASE("bifurcation sweep: numerical failures and runs too short give no critical speed, not hunting",
           "[critical_speed][robustness]") {
   const Scenario base = load_scenario(railsim::test::data_path("scenarios/single_wheelset_flange.yaml"));
-  BifurcationOptions o;
-  o.v_min = 44.0;
-  o.v_max = 48.0;
-  o.v_step = 2.0;
-  o.duration = 6.0;
-  o.up_branch = false;
-  o.threads = 2;
+  BifurcationOptions o = railsim::test::flange_sweep_options();
   SECTION("an integrator that cannot take a step: every point fails numerically") {
     Scenario sc = base;
     sc.integrator.max_steps = 3;  // a forced blow-up: legal, but no run gets far
