@@ -102,6 +102,14 @@ std::string kmh(double v) {
   return buf;
 }
 
+// The critical speed as printed: "undetermined" when a failure left no
+// verdict, "none (derailed)" when a ramp derailed, else the speed or "none found".
+std::string verdict_text(const engine::CriticalSpeedOutcome& o) {
+  if (!o.bifurcation.undetermined.empty()) return "undetermined (see below)";
+  if (!o.ramping.derailment.empty()) return "none (derailed, see below)";
+  return kmh(o.critical);
+}
+
 // Exit code of analyses whose verdict may be missing: a bifurcation sweep
 // whose hunting range could not be followed (engine BifurcationResult::
 // undetermined) gives no critical speed; the reason goes to stderr, and the
@@ -260,7 +268,12 @@ int run_reduction_study(const engine::Scenario& base, const CriticalSpeedArgs& a
               "critical_speed_vs_k.png\n\n",
               r.wall_time, a.out.c_str());
   int code = kExitSuccess;
-  for (const auto& e : r.entries) code = verdict_exit(e.bifurcation, e.label, code);
+  for (const auto& e : r.entries) {
+    code = verdict_exit(e.bifurcation, e.label, code);
+    if (!e.ramp_stop.empty())
+      std::fprintf(stderr, "railsim critical-speed: %s: no critical speed: %s\n", e.label.c_str(), e.ramp_stop.c_str());
+    if (e.ramp_failed) code = std::max(code, kExitNumericalFailure);
+  }
   return code;
 }
 
@@ -345,7 +358,8 @@ int run_critical_speed(const CriticalSpeedArgs& a) {
     summary.write_file(a.out + "/summary.json");
     std::printf("%-16s %22s %22s %12s\n", "contact model", "critical speed", "linear crit. speed", "wall time");
     for (std::size_t i = 0; i < runs.size(); ++i)
-      std::printf("%-16s %22s %22s %10.1f s\n", runs[i].model.c_str(), kmh(pts.y[i] / 3.6).c_str(), "", pts.x[i]);
+      std::printf("%-16s %22s %22s %10.1f s\n", runs[i].model.c_str(), verdict_text(runs[i].outcome).c_str(),
+                  kmh(runs[i].outcome.linear).c_str(), pts.x[i]);
     int code = kExitSuccess;
     for (const auto& m : runs) code = verdict_exit(m.outcome.bifurcation, m.model, code);
     return code;
@@ -379,11 +393,10 @@ int run_critical_speed(const CriticalSpeedArgs& a) {
                 s.ramp_start_source.c_str(), s.v_min * 3.6);
   else
     std::printf("  method             %s over %.0f..%.0f km/h\n", a.method.c_str(), s.v_min * 3.6, s.v_max * 3.6);
-  std::printf("  critical speed     %s\n",
-              o.bifurcation.undetermined.empty() ? kmh(o.critical).c_str() : "undetermined (see below)");
+  std::printf("  critical speed     %s\n", verdict_text(o).c_str());
   std::printf("  linear crit. speed %s (eigenvalues)\n", kmh(o.linear).c_str());
   if (r.with_baseline) {
-    std::printf("  without reduction  %s (linear %s)\n", kmh(ref.critical).c_str(), kmh(ref.linear).c_str());
+    std::printf("  without reduction  %s (linear %s)\n", verdict_text(ref).c_str(), kmh(ref.linear).c_str());
     if (!std::isnan(r.change_percent))
       std::printf("  change             %+.1f %% from the reduction factors\n", r.change_percent);
   }

@@ -94,7 +94,7 @@ void add_legend_keys(results::Chart& c, const BifurcationOptions& o) {
   std::snprintf(buf, sizeof buf, "dots: back to centred running (amplitude <= %.2g mm)", o.threshold * 1e3);
   c.series.push_back(series(buf, "0.3", ".", ":", false, 5));
   c.series.push_back(series("dashed drop: fold, jump to centred running", "0.3", "v", "--", false, 5));
-  c.series.push_back(series("x: run derailed, counted as hunting", "k", "x", "", false, 6));
+  c.series.push_back(series("x: run derailed or stopped after its motion grew, counted as hunting", "k", "x", "", false, 6));
   c.series.push_back(series("red X: numerical failure or run too short: no verdict", "r", "X", "", false, 7));
 }
 

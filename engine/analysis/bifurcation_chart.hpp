@@ -7,7 +7,8 @@
 //   hollow up-triangles               still growing at the end of the run;
 //   small dots joined by a line       back to the centred running (amplitude
 //                                     at or below the threshold);
-//   black crosses                     runs that derailed (counted as hunting);
+//   black crosses                     runs that derailed or stopped after their
+//                                     motion grew (counted as hunting);
 //   red X                             numerical failure, or a run too short to
 //                                     show a cycle: no verdict.
 // No line is drawn through an unsettled point. The fold of the down branch is

@@ -61,6 +61,7 @@ PointOutcome run_point(const Scenario& base, double speed, const Eigen::VectorXd
     if (x_end) *x_end = x;
   };
   PointOutcome out;
+  std::string stop;  // the message of a run stopped by anything but a derailment
   try {
     simulate(sc.model, sc.integrator, x0, o.duration, dt, obs);
   } catch (const DerailmentError& e) {
@@ -69,9 +70,7 @@ PointOutcome run_point(const Scenario& base, double speed, const Eigen::VectorXd
     spdlog::warn("speed {:.1f} km/h: run derailed ({}); counted as hunting", speed * 3.6, e.what());
     out.failed = true;
   } catch (const NumericalError& e) {
-    // A numerical failure says nothing about the physics: no verdict here.
-    spdlog::error("speed {:.1f} km/h: numerical failure ({}); this point has no verdict", speed * 3.6, e.what());
-    out.numerical_failure = true;
+    stop = e.what();
   }
   for (std::size_t w = 0; w < nw; ++w) {
     if (t.size() < 8) break;
@@ -82,6 +81,31 @@ PointOutcome run_point(const Scenario& base, double speed, const Eigen::VectorXd
       out.growth = lc.growth;
     }
   }
+  if (!stop.empty()) {
+    // A run that stopped after its lateral motion had grown (some wheelset
+    // further out than it started, and than the threshold) left the model's
+    // range through its own motion: a wheel lifting in the lateral model, a
+    // geometry without flange run out of. That is the instability the sweep
+    // looks for: it counts as hunting, as a derailment does. A stop before
+    // the motion grew (at the start, or while it decayed) says nothing about
+    // the physics: no verdict at this speed.
+    double grown = 0.0;  // largest |y| over its start (or the threshold), over the wheelsets [m]
+    for (std::size_t w = 0; w < nw && !y[w].empty(); ++w) {
+      double peak = 0.0;
+      for (double v : y[w]) peak = std::max(peak, std::abs(v));
+      grown = std::max(grown, peak - std::max(std::abs(y[w].front()), o.threshold));
+    }
+    if (grown > 0.1 * o.threshold) {
+      spdlog::warn("speed {:.1f} km/h: run stopped after its lateral motion grew by {:.2f} mm ({}); counted as "
+                   "hunting",
+                   speed * 3.6, grown * 1e3, stop);
+      out.failed = true;
+    } else {
+      spdlog::error("speed {:.1f} km/h: numerical failure before the motion grew ({}); this point has no verdict",
+                    speed * 3.6, stop);
+      out.numerical_failure = true;
+    }
+  }
   return out;
 }
 
@@ -90,8 +114,11 @@ PointOutcome run_point(const Scenario& base, double speed, const Eigen::VectorXd
 // (column "down": 1 on the down branch, 0 on the up branch) and the key
 // "<branch>:<speed %.6g m/s>", or "chain:<speed>" for a down-branch point
 // started from the final state of the speed above (path following). Column
-// "failed": 0 the run reached its end, 1 it derailed, 2 numerical failure.
-const std::vector<std::string> kPointColumns = {"speed_m_s", "down", "amplitude_m", "frequency_hz", "growth", "failed"};
+// "stop": 0 the run reached its end, 1 it derailed or stopped after its
+// lateral motion grew (counts as hunting), 2 numerical failure before the
+// motion grew (no verdict).
+// (Files of earlier versions had "failed", 1 for any stop: they are refused.)
+const std::vector<std::string> kPointColumns = {"speed_m_s", "down", "amplitude_m", "frequency_hz", "growth", "stop"};
 constexpr const char* kChainPrefix = "chain";
 
 std::string point_key(Branch b, bool chained, double v) {
@@ -354,11 +381,14 @@ BifurcationResult collect(const std::vector<SweepResult>& rows, const Bifurcatio
     if (s == PointState::failed || s == PointState::too_short) {
       // The hunting range cannot be followed past this point: no verdict.
       char buf[400];
+      const bool top = it == down.rbegin();
       if (s == PointState::failed)
         std::snprintf(buf, sizeof buf,
-                      "the run at %.1f km/h on the down branch stopped on a numerical failure (see the log); "
-                      "the hunting range above it cannot be told, so there is no critical speed",
-                      (*it)->speed * 3.6);
+                      "the run at %.1f km/h on the down branch stopped on a numerical failure before its motion grew "
+                      "(see the log); %s, so there is no critical speed",
+                      (*it)->speed * 3.6,
+                      top ? "it is the top of the sweep, where the hunting range must start"
+                          : "the hunting range above it cannot be followed past it");
       else
         std::snprintf(buf, sizeof buf,
                       "the run at %.1f km/h on the down branch is too short to show a cycle: amplitude %.2f mm "
@@ -416,7 +446,7 @@ BifurcationResult continuation_sweep(const Scenario& scenario, const Bifurcation
   long lowest = -1;  // position in `down` of V_h
   for (std::size_t i = 0; i < down.size() && is_hunting(point_of(*down[i]), o); ++i) lowest = static_cast<long>(i);
   const std::string chain_csv = points_csv + ".chain.csv";
-  std::vector<SweepResult> chain = read_finished_points(chain_csv, kPointColumns.size());
+  std::vector<SweepResult> chain = read_finished_points(chain_csv, kPointColumns.size(), &kPointColumns);
   checked_points(chain, chain_csv);
   if (lowest >= 0 && static_cast<std::size_t>(lowest) + 1 < down.size()) {
     const SweepResult& vh = *down[static_cast<std::size_t>(lowest)];

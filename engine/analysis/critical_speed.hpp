@@ -67,10 +67,14 @@ struct BifurcationPoint {
   double amplitude = 0.0;            // max over wheelsets of the settled amplitude [m]
   double frequency = 0.0;            // of the wheelset with the largest amplitude [Hz]
   double growth = 0.0;               // relative amplitude change over the tail
-  bool failed = false;               // run stopped by a derailment (the physics) -> treated as hunting
-  // Run stopped by a numerical failure (integrator, NaN, absurd state): the
-  // point has no verdict, and a sweep whose verdict depends on it has no
-  // critical speed (BifurcationResult::undetermined).
+  // Run stopped by a derailment, or by any failure after its lateral motion
+  // had grown (a wheelset further out than it started and than the threshold:
+  // the motion left the model's range, e.g. a wheel lifting in the lateral
+  // model) -> treated as hunting.
+  bool failed = false;
+  // Run stopped by a numerical failure before any hunting (integrator, NaN,
+  // absurd state): the point has no verdict, and a sweep whose verdict
+  // depends on it has no critical speed (BifurcationResult::undetermined).
   bool numerical_failure = false;
   bool continued = false;            // down branch: started from the limit cycle of the speed above
 };
@@ -103,8 +107,10 @@ bool is_hunting(const BifurcationPoint& p, const BifurcationOptions& o);
 //   growing   amplitude above the threshold, still growing (counts as hunting);
 //   decaying  amplitude above the threshold, still decaying (not hunting);
 //   centred   amplitude at or below the threshold (back to the centred running);
-//   stopped   the run derailed (wheelset past its flange): counts as hunting;
-//   failed    the run stopped on a numerical failure: no verdict;
+//   stopped   the run derailed (wheelset past its flange), or stopped after
+//             its lateral motion grew (e.g. a wheel lifting in the lateral
+//             model): counts as hunting;
+//   failed    the run stopped on a numerical failure before its motion grew: no verdict;
 //   too_short amplitude above the threshold but no measurable cycle in the tail
 //             (fewer than two half-cycles): no verdict, the runs need more time.
 enum class PointState { settled, growing, decaying, centred, stopped, failed, too_short };

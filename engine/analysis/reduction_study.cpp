@@ -276,11 +276,13 @@ ReductionStudyResult reduction_study(const Scenario& base, const ReductionStudyO
       const std::size_t i = static_cast<std::size_t>(p.index);
       const auto te = std::chrono::steady_clock::now();
       RampingResult r;
-      double stopped = 0.0;
+      double stopped = 0.0;  // 0 ran to the end, 1 numerical failure, 2 derailed
       try {
         r = ramping(res.entries[i].scenario, o.ramping);
+        if (!r.derailment.empty()) stopped = 2.0;
       } catch (const NumericalError& err) {
-        spdlog::warn("reductions: {}: ramp stopped ({}); no critical speed", res.entries[i].label, err.what());
+        spdlog::error("reductions: {}: ramp stopped on a numerical failure ({}); no verdict", res.entries[i].label,
+                      err.what());
         r.critical_speed = r.critical_time = r.critical_amplitude = kNaN;
         r.start_speed = o.ramping.v_start;
         stopped = 1.0;
@@ -299,6 +301,10 @@ ReductionStudyResult reduction_study(const Scenario& base, const ReductionStudyO
       r.critical_time = row.values[3];
       r.critical_amplitude = row.values[4];
       r.start_speed = row.values[5];
+      e.ramp_failed = row.values[6] > 0.5 && row.values[6] < 1.5;
+      e.ramp_stop = e.ramp_failed             ? "the ramp stopped on a numerical failure (see the log): no verdict"
+                    : row.values[6] > 1.5 ? "the vehicle derailed during the ramp: no critical speed"
+                                          : "";
       read_ramp_record(o.out_dir + "/" + e.folder + "/ramping_record.csv", r);
       e.critical = r.critical_speed;
       e.fold_amplitude = r.critical_amplitude;
@@ -362,6 +368,7 @@ results::Json reduction_study_summary(const Scenario& sc, const ReductionStudyOp
       j.set("points", static_cast<long>(e.bifurcation.points.size()));
       if (!e.bifurcation.undetermined.empty()) j.set("undetermined", e.bifurcation.undetermined);
     } else {
+      if (!e.ramp_stop.empty()) j.set("stopped", e.ramp_stop);
       j.set("hunting_at_start", e.ramping.hunting_at_start);
       j.set("hunting_at_end", e.ramping.hunting_at_end);
       j.set("start_speed_kmh", num(e.ramping.start_speed * kKmh));

@@ -65,6 +65,11 @@ struct ReductionStudyEntry {
   std::string below_state;
   BifurcationResult bifurcation;     // method bifurcation
   RampingResult ramping;             // method ramping
+  // Ramping: why the entry has no critical speed when its ramp stopped
+  // ("" it did not): a numerical failure (ramp_failed, no verdict) or a
+  // derailment (a result).
+  bool ramp_failed = false;
+  std::string ramp_stop;
   double wall_time = 0.0;            // [s] spent on this entry in this call (0 when read back)
 };
 

@@ -108,7 +108,14 @@ bool parse_line(const std::string& line, std::size_t n_values, SweepResult& out)
   return true;
 }
 
-void read_file_into(const std::string& path, std::size_t n_values, std::map<long, SweepResult>& found) {
+std::string header_of(const std::vector<std::string>& columns) {
+  std::string h = "index,key";
+  for (const auto& c : columns) h += "," + c;
+  return h;
+}
+
+void read_file_into(const std::string& path, std::size_t n_values, std::map<long, SweepResult>& found,
+                    const std::vector<std::string>* columns) {
   const std::string content = read_own_file(path);
   std::size_t start = 0;
   while (start < content.size()) {
@@ -116,22 +123,23 @@ void read_file_into(const std::string& path, std::size_t n_values, std::map<long
     if (nl == std::string::npos) break;  // torn last line: no newline, ignore
     const std::string line = content.substr(start, nl - start);
     start = nl + 1;
+    if (columns && line.rfind("index,key", 0) == 0 && line != header_of(*columns))
+      throw InputError(path + ": its columns (" + line + ") are not this sweep's (" + header_of(*columns) +
+                       "): written by another version of railsim or another kind of sweep; delete it and its "
+                       ".part files, or give another output folder");
     SweepResult r;
     if (parse_line(line, n_values, r)) found[r.index] = std::move(r);
   }
 }
 
-std::string header_line(const SweepOptions& o) {
-  std::string h = "index,key";
-  for (const auto& c : o.result_columns) h += "," + c;
-  return h;
-}
+std::string header_line(const SweepOptions& o) { return header_of(o.result_columns); }
 
 }  // namespace
 
-std::vector<SweepResult> read_finished_points(const std::string& output, std::size_t n_values) {
+std::vector<SweepResult> read_finished_points(const std::string& output, std::size_t n_values,
+                                              const std::vector<std::string>* columns) {
   std::map<long, SweepResult> found;
-  read_file_into(output, n_values, found);
+  read_file_into(output, n_values, found, columns);
   const fs::path out(output);
   const fs::path dir = out.has_parent_path() ? out.parent_path() : fs::path(".");
   std::error_code ec;
@@ -139,7 +147,7 @@ std::vector<SweepResult> read_finished_points(const std::string& output, std::si
     for (const auto& entry : fs::directory_iterator(dir, ec)) {
       const std::string name = entry.path().filename().string();
       const std::string prefix = out.filename().string() + ".part";
-      if (name.rfind(prefix, 0) == 0) read_file_into(entry.path().string(), n_values, found);
+      if (name.rfind(prefix, 0) == 0) read_file_into(entry.path().string(), n_values, found, columns);
     }
   }
   std::vector<SweepResult> v;
@@ -163,7 +171,7 @@ std::vector<SweepResult> run_sweep(const std::vector<SweepPoint>& points, const 
 
   // What is already done (from any earlier run, any rank count).
   std::map<long, SweepResult> done;
-  for (auto& r : read_finished_points(o.output, nv)) done[r.index] = r;
+  for (auto& r : read_finished_points(o.output, nv, &o.result_columns)) done[r.index] = r;
   std::vector<const SweepPoint*> todo;
   for (const auto& p : points) {
     auto it = done.find(p.index);

@@ -51,7 +51,11 @@ std::vector<SweepResult> run_sweep(const std::vector<SweepPoint>& points, const 
                                    const SweepOptions& options);
 
 // Finished results found in OUT and OUT.part* (for inspection and tests).
-std::vector<SweepResult> read_finished_points(const std::string& output, std::size_t n_values);
+// With `columns`, a file whose header names other result columns (written by
+// another version or another kind of sweep) is refused with an InputError
+// naming it, rather than read as this sweep's points.
+std::vector<SweepResult> read_finished_points(const std::string& output, std::size_t n_values,
+                                              const std::vector<std::string>* columns = nullptr);
 
 // Write a finished sweep file (header "index,key,<columns>", one line per row,
 // values with 17 digits) atomically (temporary file + rename).

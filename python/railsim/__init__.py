@@ -184,8 +184,12 @@ def critical_speed(sc, method="bifurcation", *, model="", reduction="", v_min_km
     """Critical speed as `railsim critical-speed` (one run, no baseline):
     settings default to the scenario's critical_speed section. Returns a dict:
     critical_speed_kmh, linear_critical_speed_kmh (None when none found),
-    points (bifurcation: arrays per sweep point) or ramping (the record), the
-    settings. The sweep keeps its points in out/bifurcation.csv (resumable);
+    points (bifurcation: arrays per sweep point, with each point's state:
+    settled, growing, decaying, centred, stopped, failed, too_short) or
+    ramping (the record), the settings. No critical speed is not always "no
+    hunting": bifurcation's `undetermined` says why when a numerical failure
+    or runs too short left no verdict (None otherwise; the program exits 3 or
+    2 there), ramping's `derailment` when the ramp derailed. The sweep keeps its points in out/bifurcation.csv (resumable);
     without out a temporary folder is used."""
     s = _scenario_of(sc)
     cont = -1 if continuation is None else int(bool(continuation))

@@ -116,18 +116,25 @@ py::dict critical_speed(const engine::Scenario& base, const std::string& method,
   settings["threshold_mm"] = st.threshold * 1e3;
   if (st.method == engine::CriticalSpeedMethod::bifurcation) {
     std::vector<double> v, amp, freq, growth;
-    std::vector<std::string> branch;
-    std::vector<bool> failed, continued;
+    std::vector<std::string> branch, state;
+    std::vector<bool> failed, numerical_failure, continued;
+    const engine::BifurcationOptions bo = engine::bifurcation_options(st);
     for (const auto& p : r.bifurcation.points) {
       v.push_back(p.speed * 3.6), amp.push_back(p.amplitude * 1e3), freq.push_back(p.frequency);
       growth.push_back(p.growth), branch.push_back(engine::branch_name(p.branch)), failed.push_back(p.failed);
+      numerical_failure.push_back(p.numerical_failure);
+      state.push_back(engine::point_state_name(engine::point_state(p, bo)));
       continued.push_back(p.continued);
     }
     py::dict pts;
     pts["speed_kmh"] = to_array(v), pts["branch"] = branch, pts["amplitude_mm"] = to_array(amp);
     pts["frequency_hz"] = to_array(freq), pts["growth"] = to_array(growth), pts["failed"] = failed;
+    pts["numerical_failure"] = numerical_failure, pts["state"] = state;
     pts["continued"] = continued;
     d["points"] = pts;
+    // No critical speed because of a numerical failure or runs too short: why (None: the verdict stands).
+    d["undetermined"] = r.bifurcation.undetermined.empty() ? py::object(py::none())
+                                                           : py::object(py::str(r.bifurcation.undetermined));
     settings["v_step_kmh"] = st.v_step * 3.6, settings["duration_s"] = st.duration;
     settings["large_disturbance_mm"] = st.large_disturbance * 1e3;
     settings["small_disturbance_mm"] = st.small_disturbance * 1e3;
@@ -142,6 +149,7 @@ py::dict critical_speed(const engine::Scenario& base, const std::string& method,
     d["ramping"] = rec;
     d["hunting_at_start"] = rr.hunting_at_start;
     d["hunting_at_end"] = rr.hunting_at_end;
+    d["derailment"] = rr.derailment.empty() ? py::object(py::none()) : py::object(py::str(rr.derailment));
     settings["start_speed_kmh"] = st.ramp_start * 3.6, settings["disturbance_mm"] = st.ramp_disturbance * 1e3;
     settings["deceleration_m_s2"] = st.deceleration;
   }

@@ -108,3 +108,20 @@ def test_critical_speed_matches_the_program(cli, tmp_path):
                                        sorted(r["points"]["amplitude_mm"]), rtol=1e-9, atol=1e-12)
         else:
             assert r["settings"]["start_speed_kmh"] == pytest.approx(180.0)
+
+
+def test_critical_speed_says_when_there_is_no_verdict(cli, tmp_path):
+    # 1 s per point: the last 30 % hold no cycle. The library says why there is no critical speed
+    # (undetermined, each point's state too_short), the program exits 2 with the same reason.
+    sc = railsim.load_scenario(SINGLE)
+    r = railsim.critical_speed(sc, v_min_kmh=60, v_max_kmh=180, v_step_kmh=60, duration=1.0, up_branch=False)
+    assert r["critical_speed_kmh"] is None
+    assert "too short" in r["undetermined"]
+    assert "too_short" in r["points"]["state"]
+    code, text = cli("critical-speed", SINGLE, "--v-min", 60, "--v-max", 180, "--v-step", 60, "--duration", 1.0,
+                     "--no-up-branch", "--out", tmp_path)
+    assert code == 2, text
+    assert "too short" in text
+    # With enough time the verdict stands and says so.
+    r = railsim.critical_speed(sc, v_min_kmh=60, v_max_kmh=180, v_step_kmh=60, duration=6.0, up_branch=False)
+    assert r["undetermined"] is None

@@ -339,6 +339,19 @@ TEST_CASE("railsim critical-speed: a sweep whose runs fail numerically or are to
   CHECK(std::isnan(json_number(s, "critical_speed_kmh")));
   CHECK(s["points_by_state"]["failed"] == 3);
   CHECK(s["points_by_state"]["stopped"] == 0);
+  // The same forced blow-up by ramping, alone and in a --reductions study: exit 3, the reason named.
+  r = run_railsim("critical-speed '" + dir + "/max_steps_3.yaml' --method ramping --v-min 150 --v-max 170 --out '" +
+                  dir + "/ramp_failed'");
+  INFO(r.output);
+  CHECK(r.exit_code == 3);
+  CHECK(r.output.find("numerical failure while settling") != std::string::npos);
+  r = run_railsim("critical-speed '" + dir + "/max_steps_3.yaml' --method ramping --v-min 150 --v-max 170 "
+                  "--reductions 1,0.9 --threads 2 --out '" + dir + "/ramp_reductions_failed'");
+  INFO(r.output);
+  CHECK(r.exit_code == 3);
+  CHECK(r.output.find("uniform 0.9: no critical speed: the ramp stopped on a numerical failure") != std::string::npos);
+  CHECK(railsim::test::read_text(dir + "/ramp_reductions_failed/summary.json").find("\"stopped\"") !=
+        std::string::npos);
   // Runs of 0.5 s: a tail of 0.15 s holds no cycle. Exit 2 (a setting to raise), naming --duration.
   r = run_railsim("critical-speed '" + kScenario + "' --v-min 160 --v-max 170 --v-step 5 --duration 0.5 --threads 2 "
                   "--no-up-branch --out '" + dir + "/short'");
@@ -349,4 +362,24 @@ TEST_CASE("railsim critical-speed: a sweep whose runs fail numerically or are to
   s = railsim::test::read_json(dir + "/short/summary.json");
   CHECK(std::isnan(json_number(s, "critical_speed_kmh")));
   CHECK(s["undetermined"].get<std::string>().find("too short") != std::string::npos);
+}
+
+TEST_CASE("railsim critical-speed: runs that lift a wheel after their motion grew count as hunting",
+          "[cli][critical_speed][robustness]") {
+  // The shipped single wheelset (lateral model, conical wheels, no flange) with the default sweep, 80-300 km/h:
+  // above its linear critical speed (176.5 km/h) the hunting grows until a wheel unloads, which the lateral model
+  // cannot follow (it stops the run). That is the instability, not a numerical failure: such points count as
+  // hunting and the critical speed is the first sweep speed above the linear one.
+  const std::string dir = railsim::test::temp_dir("cli_cs_wheel_lift");
+  const auto r = run_railsim("critical-speed '" + railsim::test::source_path("scenarios/single_wheelset.yaml") +
+                             "' --threads 2 --out '" + dir + "'");
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  const auto s = railsim::test::read_json(dir + "/summary.json");
+  const double v = json_number(s, "critical_speed_kmh"), v_lin = json_number(s, "linear_critical_speed_kmh");
+  CHECK(v >= v_lin);
+  CHECK(v <= v_lin + 10.0);  // the sweep's step
+  CHECK(s["points_by_state"]["failed"] == 0);
+  CHECK(s["points_by_state"]["stopped"].get<int>() > 0);
+  CHECK(r.output.find("run stopped after its lateral motion grew") != std::string::npos);
 }

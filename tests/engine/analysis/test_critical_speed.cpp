@@ -317,10 +317,16 @@ TEST_CASE("bifurcation sweep: numerical failures and runs too short give no crit
   }
   SECTION("a resumed sweep refuses a damaged points file instead of reading a verdict from it") {
     const std::string out = railsim::test::temp_dir("damaged_points") + "/points.csv";
-    std::ofstream(out) << "index,key,speed_m_s,down,amplitude_m,frequency_hz,growth,failed\n"
+    std::ofstream(out) << "index,key,speed_m_s,down,amplitude_m,frequency_hz,growth,stop\n"
                           "0,down:48,48,1,0.004,2.1,0,0\n1,down:46,46,1,nan,2.0,0,0\n2,down:44,44,1,0.0001,0,0,0\n";
     CHECK_THROWS_WITH(bifurcation_sweep(base, o, out),
                       Catch::Contains("points.csv: point 'down:46'") && Catch::Contains("damaged file"));
+    // A file of an earlier version, whose "failed" column said 1 for any stop (numerical ones too): refused,
+    // not read as derailments (which count as hunting).
+    std::ofstream(out) << "index,key,speed_m_s,down,amplitude_m,frequency_hz,growth,failed\n"
+                          "0,down:48,48,1,0.004,2.1,0,1\n1,down:46,46,1,0.004,2.0,0,1\n2,down:44,44,1,0.0001,0,0,0\n";
+    CHECK_THROWS_WITH(bifurcation_sweep(base, o, out),
+                      Catch::Contains("points.csv: its columns") && Catch::Contains("another version"));
   }
   SECTION("runs too short to show a cycle in their tail") {
     o.duration = 0.5;  // tail 0.15 s: less than one hunting half-cycle (about 2-3 Hz here)
