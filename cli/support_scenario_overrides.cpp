@@ -112,9 +112,11 @@ YAML::Node unshare_path(const YAML::Node& node, const std::vector<std::string>& 
         copy.push_back(node[i]);
         continue;
       }
-      YAML::Node own(YAML::NodeType::Null);  // a node of its own, so that assigning to it rebinds it alone
-      own = unshare_path(node[i], path, k + 1);
-      copy.push_back(own);
+      // A node of the copy's own (assigning to a handle would move the handle
+      // onto the shared node): assigning through the sequence rebinds only it,
+      // and so does the edit later.
+      copy.push_back(YAML::Node(YAML::NodeType::Null));
+      copy[copy.size() - 1] = unshare_path(node[i], path, k + 1);
     }
     return copy;
   }

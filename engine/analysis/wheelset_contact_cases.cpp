@@ -27,6 +27,11 @@ std::string num(double v) {
 }  // namespace
 
 namespace {
+// Where position k was given ("FILE:LINE: key 'positions[k]'", else "position k").
+std::string where_of(const std::vector<WheelsetContactPosition>& positions, std::size_t k) {
+  return positions[k].where.empty() ? "position " + std::to_string(k) : positions[k].where;
+}
+
 // One position: both wheels' contact points, normal loads and creep forces.
 WheelsetContactResult solve_position(const WheelsetContactSetup& s, const contact::WheelRailGeometry& geo,
                                      const contact::TangentialModel& model, contact::TangentialWorkspace* ws,
@@ -49,10 +54,10 @@ std::vector<WheelsetContactResult> wheelset_contact(const WheelsetContactSetup& 
   for (std::size_t k = 0; k < positions.size(); ++k) {
     try {
       out.push_back(solve_position(s, geo, *model, ws.get(), Es, positions[k]));
-    } catch (const std::exception& e) {
-      // A position that cannot be solved is a position the user gave: bad input, named where it was given.
-      const std::string& w = positions[k].where;
-      throw InputError((w.empty() ? "position " + std::to_string(k) : w) + ": " + e.what());
+    } catch (const InputError& e) {  // a position outside what the geometry can solve (e.g. on the flange tip)
+      throw InputError(where_of(positions, k) + ": " + e.what());
+    } catch (const NumericalError& e) {  // a solver that did not converge: numerical, named the same way
+      throw NumericalError(where_of(positions, k) + ": " + e.what());
     }
   }
   return out;

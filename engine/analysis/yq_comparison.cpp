@@ -65,11 +65,9 @@ results::Json wheel_json(const YqWheelResult& w) {
 // The run's summary.json (written by `railsim run`): a run that failed
 // numerically has no verdict; one of another scenario is compared with a warning.
 void read_run_status(const std::string& file, const Scenario& sc, YqRun& run) {
-  if (!std::filesystem::exists(file)) {
-    run.warning = "no summary.json beside channels.csv: the run's status is unknown";
-    spdlog::warn("compare-yq: {}: {}", run.dir, run.warning);
-    return;
-  }
+  if (!std::filesystem::exists(file))
+    throw InputError(file + ": not found: `railsim run` writes it whatever the run's end (ok, derailed, failed), "
+                     "so the run did not finish (killed?) and its Y/Q has no verdict; run it again");
   std::ifstream in(file);
   nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
   if (j.is_discarded() || !j.is_object()) throw InputError(file + ": not a JSON object (a run's summary.json)");

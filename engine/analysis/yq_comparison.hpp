@@ -40,7 +40,7 @@ struct YqRun {
   std::vector<double> time, distance;  // distance: of the compared wheelset [m]
   std::vector<double> yq[2];           // left, right
   YqWheelResult wheel[2];
-  std::string status;    // the run's summary.json status: ok, derailed ("" without summary.json)
+  std::string status;    // the run's summary.json status: ok, derailed
   std::string warning;   // e.g. a run of another scenario than the one compared against ("" none)
 };
 
@@ -58,8 +58,8 @@ struct YqComparison {
 // Throws InputError naming the file when channels.csv is missing or lacks the
 // wheelset's columns, when a value of time, distance or Y/Q is not a finite
 // number (naming the row and column), when the counts differ, or when the
-// run's summary.json says it failed numerically (status "failed": its Y/Q has
-// no verdict). A run of another scenario (summary.json's "scenario" differs)
+// run's summary.json is missing (the run did not finish) or says it failed
+// numerically (status "failed"): such a run's Y/Q has no verdict. A run of another scenario (summary.json's "scenario" differs)
 // is compared with a warning (YqRun::warning, logged).
 YqComparison compare_yq(const Scenario& sc, const std::vector<std::string>& dirs,
                         const std::vector<std::string>& labels, const std::string& wheelset = "");

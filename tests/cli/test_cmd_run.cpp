@@ -270,6 +270,11 @@ TEST_CASE("railsim run: --set through a YAML alias changes that place only, past
   REQUIRE(!zones.empty());
   CHECK(number(zones[zones.size() - 1], "end") == 500.0);
   CHECK(js["warnings"].empty());  // 40 m in 1 s: well inside the track
+  // The whole aliased element replaced: the same 500 m.
+  r = test::run_railsim("run " + s + " --set 'track.segments[1]={type: straight, length: 300}' --out " + out);
+  REQUIRE(r.exit_code == 0);
+  js = test::read_json(out + "/summary.json");
+  CHECK(number(js["running_safety"]["zones"][js["running_safety"]["zones"].size() - 1], "end") == 500.0);
   // 40 m/s for 15 s from 0: 600 m on a 400 m track: the run says where it leaves the track.
   r = test::run_railsim("run " + s + " --set duration=15 --set output_interval=0.05 --out " + out);
   REQUIRE(r.exit_code == 0);
@@ -277,7 +282,8 @@ TEST_CASE("railsim run: --set through a YAML alias changes that place only, past
   REQUIRE(js["warnings"].size() == 1);
   const std::string w = js["warnings"][0];
   CHECK(w.find("key 'duration'") != std::string::npos);
-  CHECK(w.find("ends at track distance 600 m, past the track's defined length 400 m") != std::string::npos);
+  CHECK(w.find("at 144 km/h for 15 s the leading wheelset ends at track distance 600 m, past the track's defined "
+               "length 400 m") != std::string::npos);
   CHECK(w.find("t = 10 s") != std::string::npos);
 }
 

@@ -28,6 +28,7 @@ void write_run(const std::string& dir, double peak) {
     const double tri = std::max(0.0, 1.0 - std::fabs(t - 5.0)) * peak;
     f << t << "," << 10.0 * t << ",10," << -0.2 << "," << tri << "\n";
   }
+  std::ofstream(dir + "/summary.json") << R"({"status": "ok"})";  // a finished run
 }
 
 }  // namespace
@@ -74,6 +75,7 @@ TEST_CASE("Y/Q comparison: peaks, places and how long Nadal's limit is exceeded"
   CHECK_THROWS_WITH(compare_yq(sc, {dir + "/a"}, {}, "ws9"), Catch::Contains("--wheelset") && Catch::Contains("ws1"));
   std::filesystem::create_directories(dir + "/c");
   std::ofstream(dir + "/c/channels.csv") << "time,distance,ws2.L.YQ\n0,0,0\n";
+  std::ofstream(dir + "/c/summary.json") << R"({"status": "ok"})";
   CHECK_THROWS_WITH(compare_yq(sc, {dir + "/c"}, {}), Catch::Contains("c/channels.csv"));
 }
 
@@ -84,12 +86,14 @@ TEST_CASE("Y/Q comparison refuses non-finite channels and failed runs, and warns
   // A NaN in a Y/Q column (line 4 of the file: header, then rows 0, 1, 2): an error naming line and column,
   // not a peak or an exceedance of Nadal's limit.
   std::filesystem::create_directories(dir + "/nan");
+  std::ofstream(dir + "/nan/summary.json") << R"({"status": "ok"})";
   std::ofstream(dir + "/nan/channels.csv") << "time,distance,ws1.L.YQ,ws1.R.YQ\n0,0,0,0.1\n0.01,0.1,0,0.2\n"
                                               "0.02,0.2,0,nan\n0.03,0.3,0,0.1\n";
   CHECK_THROWS_WITH(compare_yq(sc, {dir + "/nan"}, {}),
                     Catch::Contains("nan/channels.csv: line 4, column 'ws1.R.YQ'") &&
                         Catch::Contains("not a finite number"));
   std::filesystem::create_directories(dir + "/inf");
+  std::ofstream(dir + "/inf/summary.json") << R"({"status": "ok"})";
   std::ofstream(dir + "/inf/channels.csv") << "time,distance,ws1.L.YQ,ws1.R.YQ\n0,0,0,0.1\n0.01,inf,0,0.2\n";
   CHECK_THROWS_WITH(compare_yq(sc, {dir + "/inf"}, {}), Catch::Contains("line 3, column 'distance'"));
   // A run that failed numerically: no verdict on its Y/Q.
@@ -111,6 +115,11 @@ TEST_CASE("Y/Q comparison refuses non-finite channels and failed runs, and warns
   const YqComparison o = compare_yq(sc, {dir + "/other"}, {});
   CHECK(o.runs[0].warning.find("scenario 'manchester_coach'") != std::string::npos);
   CHECK(yq_comparison_summary(o).dump().find("\"warning\"") != std::string::npos);
+  // A run without summary.json did not finish (killed): no verdict.
+  write_run(dir + "/killed", 2.0);
+  std::filesystem::remove(dir + "/killed/summary.json");
+  CHECK_THROWS_WITH(compare_yq(sc, {dir + "/killed"}, {}),
+                    Catch::Contains("killed/summary.json: not found") && Catch::Contains("did not finish"));
   // A summary.json that is not JSON: named.
   write_run(dir + "/junk", 1.0);
   std::ofstream(dir + "/junk/summary.json") << "{not json";
