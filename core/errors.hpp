@@ -39,4 +39,15 @@ class DerailmentError : public NumericalError {
   using NumericalError::NumericalError;
 };
 
+// A run that ended because its motion left the model's range (the lateral
+// model's quasi-static wheel load reaching zero: a wheel lifting; a lateral
+// shift or yaw beyond a geometry without flange contact). Numerical for a run
+// (no running-safety verdict: the model cannot say what happens next), but
+// it tells an analysis that the motion itself got there: a bifurcation sweep
+// counts it as hunting when the lateral motion had grown.
+class ModelRangeError : public NumericalError {
+ public:
+  using NumericalError::NumericalError;
+};
+
 }  // namespace railsim

@@ -19,14 +19,18 @@ Data::Data(const Model& model)
 
 void Data::fail(std::string msg) {
   failed = true;
-  derailed = false;
+  derailed = left_range = false;
   failure = std::move(msg);
 }
 
 void Data::derail(std::string msg) {
-  failed = true;
+  fail(std::move(msg));
   derailed = true;
-  failure = std::move(msg);
+}
+
+void Data::leave_range(std::string msg) {
+  fail(std::move(msg));
+  left_range = true;
 }
 
 }  // namespace railsim::engine

@@ -87,9 +87,11 @@ struct Data {
   std::string first_invalid_reason;
   bool failed = false;
   bool derailed = false;               // the failure is a derailment (physics), not numerics
+  bool left_range = false;             // the failure is the motion leaving the model's range (ModelRangeError)
   std::string failure;                 // set when rhs returns false
   void fail(std::string msg);
   void derail(std::string msg);
+  void leave_range(std::string msg);
 };
 
 }  // namespace railsim::engine

@@ -61,6 +61,7 @@ RunSummary simulate(const Model& model, const IntegratorOptions& options, const 
       const std::string where = std::string(buf) + "; model: " + wheelset_model_name(model.wheelset_model) +
                                 " wheelset, contact " + model.coupling.describe();
       if (data.derailed) throw DerailmentError(std::string(e.what()) + where);
+      if (data.left_range) throw ModelRangeError(std::string(e.what()) + where);
       throw NumericalError(std::string(e.what()) + where);
     }
     report(t);

@@ -187,7 +187,7 @@ void finalize_model(Model& model) {
 
 bool rhs(const Model& model, Data& d, double t, const double* x, double* xdot) {
   ++d.rhs_calls;
-  d.failed = d.derailed = false;  // a failure belongs to this evaluation only (trial steps may be rejected)
+  d.failed = d.derailed = d.left_range = false;  // a failure belongs to this evaluation only (trial steps may be rejected)
   d.t = t;
   d.V = model.speed.speed(t);
   d.s = model.speed.distance(t);

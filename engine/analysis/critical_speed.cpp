@@ -61,7 +61,7 @@ PointOutcome run_point(const Scenario& base, double speed, const Eigen::VectorXd
     if (x_end) *x_end = x;
   };
   PointOutcome out;
-  std::string stop;  // the message of a run stopped by anything but a derailment
+  std::string range_stop;  // the message of a run whose motion left the model's range
   try {
     simulate(sc.model, sc.integrator, x0, o.duration, dt, obs);
   } catch (const DerailmentError& e) {
@@ -69,8 +69,12 @@ PointOutcome run_point(const Scenario& base, double speed, const Eigen::VectorXd
     // amplitude it had reached.
     spdlog::warn("speed {:.1f} km/h: run derailed ({}); counted as hunting", speed * 3.6, e.what());
     out.failed = true;
+  } catch (const ModelRangeError& e) {
+    range_stop = e.what();
   } catch (const NumericalError& e) {
-    stop = e.what();
+    // The numerics broke down: says nothing about the physics, no verdict here.
+    spdlog::error("speed {:.1f} km/h: numerical failure ({}); this point has no verdict", speed * 3.6, e.what());
+    out.numerical_failure = true;
   }
   for (std::size_t w = 0; w < nw; ++w) {
     if (t.size() < 8) break;
@@ -81,14 +85,13 @@ PointOutcome run_point(const Scenario& base, double speed, const Eigen::VectorXd
       out.growth = lc.growth;
     }
   }
-  if (!stop.empty()) {
-    // A run that stopped after its lateral motion had grown (some wheelset
-    // further out than it started, and than the threshold) left the model's
-    // range through its own motion: a wheel lifting in the lateral model, a
-    // geometry without flange run out of. That is the instability the sweep
-    // looks for: it counts as hunting, as a derailment does. A stop before
-    // the motion grew (at the start, or while it decayed) says nothing about
-    // the physics: no verdict at this speed.
+  if (!range_stop.empty()) {
+    // The motion left the model's range (a wheel lifting in the lateral model,
+    // a geometry without flange run out of). After the lateral motion had
+    // grown (some wheelset further out than it started, and than the
+    // threshold) that is the instability the sweep looks for: it counts as
+    // hunting, as a derailment does. Without that growth (at the start, or
+    // while the motion decayed) it says nothing about the physics: no verdict.
     double grown = 0.0;  // largest |y| over its start (or the threshold), over the wheelsets [m]
     for (std::size_t w = 0; w < nw && !y[w].empty(); ++w) {
       double peak = 0.0;
@@ -98,11 +101,12 @@ PointOutcome run_point(const Scenario& base, double speed, const Eigen::VectorXd
     if (grown > 0.1 * o.threshold) {
       spdlog::warn("speed {:.1f} km/h: run stopped after its lateral motion grew by {:.2f} mm ({}); counted as "
                    "hunting",
-                   speed * 3.6, grown * 1e3, stop);
+                   speed * 3.6, grown * 1e3, range_stop);
       out.failed = true;
     } else {
-      spdlog::error("speed {:.1f} km/h: numerical failure before the motion grew ({}); this point has no verdict",
-                    speed * 3.6, stop);
+      spdlog::error("speed {:.1f} km/h: the run left the model's range before its motion grew ({}); this point "
+                    "has no verdict",
+                    speed * 3.6, range_stop);
       out.numerical_failure = true;
     }
   }
@@ -114,9 +118,9 @@ PointOutcome run_point(const Scenario& base, double speed, const Eigen::VectorXd
 // (column "down": 1 on the down branch, 0 on the up branch) and the key
 // "<branch>:<speed %.6g m/s>", or "chain:<speed>" for a down-branch point
 // started from the final state of the speed above (path following). Column
-// "stop": 0 the run reached its end, 1 it derailed or stopped after its
-// lateral motion grew (counts as hunting), 2 numerical failure before the
-// motion grew (no verdict).
+// "stop": 0 the run reached its end, 1 it derailed or left the model's range
+// after its lateral motion grew (counts as hunting), 2 numerical failure, or
+// out of range before the motion grew (no verdict).
 // (Files of earlier versions had "failed", 1 for any stop: they are refused.)
 const std::vector<std::string> kPointColumns = {"speed_m_s", "down", "amplitude_m", "frequency_hz", "growth", "stop"};
 constexpr const char* kChainPrefix = "chain";
@@ -295,9 +299,6 @@ const char* point_state_name(PointState s) {
   return "settled";
 }
 
-namespace {
-// A model that solves a contact patch needs the scenario to give one: conical
-// wheels with prescribed creep coefficients only work with 'coefficients'.
 void check_model_has_patch(const Scenario& sc, const std::string& model) {
   if (model.empty() || contact::find_tangential_model(model).geometry_coefficients || sc.nominal_patch.Fz > 0.0) return;
   throw InputError("tangential model '" + model + "' needs a contact patch, and scenario '" + sc.name + "' (" +
@@ -305,7 +306,6 @@ void check_model_has_patch(const Scenario& sc, const std::string& model) {
                    "contact.patch {a, b, N_ref} or geometry curvatures (A, B), use a table or profiles geometry, "
                    "or keep the model 'coefficients'");
 }
-}  // namespace
 
 Scenario with_contact(const Scenario& scenario, const std::string& tangential_model,
                       const contact::ReductionFactors* reduction) {
@@ -384,7 +384,7 @@ BifurcationResult collect(const std::vector<SweepResult>& rows, const Bifurcatio
       const bool top = it == down.rbegin();
       if (s == PointState::failed)
         std::snprintf(buf, sizeof buf,
-                      "the run at %.1f km/h on the down branch stopped on a numerical failure before its motion grew "
+                      "the run at %.1f km/h on the down branch stopped on a numerical failure "
                       "(see the log); %s, so there is no critical speed",
                       (*it)->speed * 3.6,
                       top ? "it is the top of the sweep, where the hunting range must start"

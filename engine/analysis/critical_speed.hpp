@@ -67,13 +67,13 @@ struct BifurcationPoint {
   double amplitude = 0.0;            // max over wheelsets of the settled amplitude [m]
   double frequency = 0.0;            // of the wheelset with the largest amplitude [Hz]
   double growth = 0.0;               // relative amplitude change over the tail
-  // Run stopped by a derailment, or by any failure after its lateral motion
-  // had grown (a wheelset further out than it started and than the threshold:
-  // the motion left the model's range, e.g. a wheel lifting in the lateral
-  // model) -> treated as hunting.
+  // Run stopped by a derailment, or by its motion leaving the model's range
+  // (ModelRangeError: a wheel lifting in the lateral model, a geometry without
+  // flange run out of) after its lateral motion had grown (a wheelset further
+  // out than it started and than the threshold) -> treated as hunting.
   bool failed = false;
-  // Run stopped by a numerical failure before any hunting (integrator, NaN,
-  // absurd state): the point has no verdict, and a sweep whose verdict
+  // Run stopped by a numerical failure (integrator, NaN, absurd state), or
+  // out of the model's range before its motion grew: the point has no verdict, and a sweep whose verdict
   // depends on it has no critical speed (BifurcationResult::undetermined).
   bool numerical_failure = false;
   bool continued = false;            // down branch: started from the limit cycle of the speed above
@@ -107,10 +107,11 @@ bool is_hunting(const BifurcationPoint& p, const BifurcationOptions& o);
 //   growing   amplitude above the threshold, still growing (counts as hunting);
 //   decaying  amplitude above the threshold, still decaying (not hunting);
 //   centred   amplitude at or below the threshold (back to the centred running);
-//   stopped   the run derailed (wheelset past its flange), or stopped after
-//             its lateral motion grew (e.g. a wheel lifting in the lateral
-//             model): counts as hunting;
-//   failed    the run stopped on a numerical failure before its motion grew: no verdict;
+//   stopped   the run derailed (wheelset past its flange), or its motion
+//             left the model's range after it grew (e.g. a wheel lifting in
+//             the lateral model): counts as hunting;
+//   failed    the run stopped on a numerical failure (or out of range before
+//             its motion grew): no verdict;
 //   too_short amplitude above the threshold but no measurable cycle in the tail
 //             (fewer than two half-cycles): no verdict, the runs need more time.
 enum class PointState { settled, growing, decaying, centred, stopped, failed, too_short };
@@ -156,6 +157,11 @@ RampingResult ramping(const Scenario& scenario, const RampingOptions& options);
 // Linear critical speed by bisection of the largest real part over [v_lo, v_hi];
 // NaN when stable over the whole range.
 double linear_critical_speed(const Scenario& scenario, double v_lo, double v_hi);
+
+// InputError when the tangential model `model` solves a contact patch and the
+// scenario gives none (conical wheels with prescribed creep coefficients only
+// work with 'coefficients'); nothing for an empty name.
+void check_model_has_patch(const Scenario& scenario, const std::string& model);
 
 // Copy of the scenario with another tangential model and/or reduction factors
 // (empty model name: keep; nullptr reduction: keep; factors given this way

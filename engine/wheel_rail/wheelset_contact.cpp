@@ -63,7 +63,7 @@ void range_failure(const Model& model, Data& d, int w, const WheelsetKinematics&
                   "wheelset '%s': yaw %.4g mrad exceeds the contact geometry's range of %.4g mrad (shift %.4g mm) "
                   "[model: %s wheelset]; if the vehicle is not derailing, extend the geometry's max_yaw",
                   ws.name.c_str(), k.psi * 1e3, geo.max_yaw() * 1e3, k.y * 1e3, wheelset_model_name(model.wheelset_model));
-    d.fail(buf);
+    d.leave_range(buf);
     return;
   }
   // The steepest contact angle the wheel toward which it moved meets between
@@ -95,7 +95,7 @@ void range_failure(const Model& model, Data& d, int w, const WheelsetKinematics&
                   "derailment; widen the geometry (max_lateral_shift, profiles), or reduce max_step or the "
                   "tolerances",
                   ws.name.c_str(), k.y * 1e3, ymax * 1e3, wheelset_model_name(model.wheelset_model));
-    d.fail(buf);
+    d.leave_range(buf);
   }
 }
 
@@ -137,7 +137,7 @@ bool lateral_loss_of_contact(Data& d, const Wheelset& ws, int i, double Q) {
                 "wheelset '%s', %s wheel: loss of contact (vertical load %.4g N) [model: lateral wheelset, "
                 "quasi-static loads; use the full wheelset model for wheel lift]",
                 ws.name.c_str(), i == 0 ? "left" : "right", Q);
-  d.fail(buf);
+  d.leave_range(buf);
   return false;
 }
 

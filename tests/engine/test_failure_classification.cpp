@@ -9,6 +9,9 @@
 #include <cmath>
 #include <string>
 
+#include "core/errors.hpp"
+#include "engine/io/scenario.hpp"
+#include "engine/simulation.hpp"
 #include "json_support.hpp"
 #include "test_support.hpp"
 
@@ -67,4 +70,25 @@ TEST_CASE("a wheelset beyond a flangeless geometry's range is a numerical failur
   CHECK(js["status"] == "failed");
   CHECK(js["running_safety"].is_string());
   CHECK(js["error"].get<std::string>().find("not a derailment") != std::string::npos);
+}
+
+TEST_CASE("leaving the model's range is its own kind of failure, told apart from the integrator's",
+          "[engine][derailment]") {
+  // The conical wheelset above its critical speed (the case above): the motion grows until the wheelset
+  // leaves the flangeless geometry's range. A run reports it as a numerical failure (above); an analysis can
+  // tell that the motion got there (ModelRangeError), not the integrator. The same scene with an integrator
+  // allowed three steps stops as a plain numerical failure.
+  engine::Scenario sc = engine::load_scenario(test::data_path("engine/unstable_scenario.yaml"));
+  CHECK_THROWS_AS(engine::simulate(sc.model, sc.integrator, sc.x0, sc.duration, sc.output_interval), ModelRangeError);
+  sc.integrator.max_steps = 3;
+  try {
+    engine::simulate(sc.model, sc.integrator, sc.x0, sc.duration, sc.output_interval);
+    FAIL("the run should stop");
+  } catch (const ModelRangeError&) {
+    FAIL("an integrator out of steps is not the model's range");
+  } catch (const DerailmentError&) {
+    FAIL("an integrator out of steps is not a derailment");
+  } catch (const NumericalError& e) {
+    CHECK(std::string(e.what()).find("max_steps") != std::string::npos);
+  }
 }
