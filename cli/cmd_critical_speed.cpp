@@ -124,12 +124,11 @@ int verdict_exit(const engine::BifurcationResult& b, const std::string& what, in
   return std::max(so_far, code);
 }
 
-// A ramp that derailed (the physics): its message, no critical speed.
-int ramp_exit(const engine::RampingResult& r, const std::string& what) {
-  if (r.derailment.empty()) return kExitSuccess;
+// A ramp that derailed (the physics, a result: exit 0): its message, no critical speed.
+void print_ramp_derailment(const engine::RampingResult& r, const std::string& what) {
+  if (r.derailment.empty()) return;
   std::fprintf(stderr, "railsim critical-speed: %sno critical speed: %s\n", what.empty() ? "" : (what + ": ").c_str(),
                r.derailment.c_str());
-  return kExitSuccess;
 }
 
 void print_ramp_start(const engine::CriticalSpeedStudySettings& s, const char* suffix) {
@@ -297,7 +296,7 @@ int run_critical_speed(const CriticalSpeedArgs& a) {
   if (!a.model.empty()) {
     tangential_model_option("--model", a.model);
     try {
-      (void)engine::with_contact(base, a.model, nullptr);  // a model the scenario's contact can feed
+      engine::check_model_has_patch(base, a.model);  // a model the scenario's contact can feed
     } catch (const InputError& e) {
       throw InputError("--model " + a.model + ": " + e.what());
     }
@@ -318,7 +317,7 @@ int run_critical_speed(const CriticalSpeedArgs& a) {
     for (const auto& n : names) {
       tangential_model_option("--models", n);
       try {
-        (void)engine::with_contact(base, n, nullptr);
+        engine::check_model_has_patch(base, n);
       } catch (const InputError& e) {
         throw InputError("--models: " + std::string(e.what()));
       }
@@ -402,8 +401,8 @@ int run_critical_speed(const CriticalSpeedArgs& a) {
   }
   std::printf("  wall time          %.1f s\n  results            %s/summary.json\n\n", o.wall + ref.wall,
               a.out.c_str());
-  ramp_exit(o.ramping, "");
-  if (r.with_baseline) ramp_exit(ref.ramping, "without reduction");
+  print_ramp_derailment(o.ramping, "");
+  if (r.with_baseline) print_ramp_derailment(ref.ramping, "without reduction");
   int code = verdict_exit(o.bifurcation, "");
   if (r.with_baseline) code = verdict_exit(ref.bifurcation, "without reduction", code);
   return code;
