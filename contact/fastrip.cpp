@@ -81,7 +81,7 @@ ContactForces Fastrip::compute(const ContactInput& in, TangentialWorkspace* /*ws
     const double xs = mu * Fz / (G * c2 * C.C11 * k.k11), es = mu * Fz / (G * c2 * C.C22 * k.k22);
     const double n2 = xi * xi + eta * eta;
     if (n2 > 0.0 && xs > 0.0) {
-      const double w = std::min(1.0, std::sqrt(n2) / (3.0 * std::hypot(xs, es)));
+      const double w = std::min(1.0, std::sqrt(n2 / (xs * xs + es * es)) * (1.0 / 3.0));
       const double Kc = n2 / (xi * xi / Kx + eta * eta / Ky);
       Kx = (1.0 - w) * Kx + w * Kc;
       Ky = (1.0 - w) * Ky + w * Kc;
@@ -91,7 +91,7 @@ ContactForces Fastrip::compute(const ContactInput& in, TangentialWorkspace* /*ws
   const double p0 = 3.0 * Fz / (2.0 * kPi * a * b) * load_scale_;
   const double wx = in.creep.xi / Kx;
   const double wy = in.creep.eta / Ky;
-  const double W = std::hypot(wx, wy);
+  const double W = std::sqrt(wx * wx + wy * wy);  // (not hypot: a library call, and no overflow here)
   const double ex = W > 0.0 ? -wx / W : 0.0;  // direction of the strip-theory traction
   const double ey = W > 0.0 ? -wy / W : 0.0;
   // Sliding strips (header, step 4): the rigid slip that is uniform along a
@@ -101,7 +101,7 @@ ContactForces Fastrip::compute(const ContactInput& in, TangentialWorkspace* /*ws
   // phi x, which varies along the strip, keeps the spin flexibility L3.
   const double Lu = 8.0 * a / (3.0 * G * std::sqrt(C.C11 * k.k11 * C.C22 * k.k22));
   const double ux = in.creep.xi / Lu, uy = in.creep.eta / Lu, upx = in.creep.phi / Lu;
-  const double creep_norm = std::hypot(in.creep.xi, in.creep.eta);
+  const double creep_norm = std::sqrt(in.creep.xi * in.creep.xi + in.creep.eta * in.creep.eta);
   // Longitudinal spin slip -phi y_j of a sliding strip: with Lu when creepage
   // is present, with L3 (FASTSIM) for pure spin; blended by
   // om = |(xi, eta)| / (0.1 |phi| c) in [0, 1] so the force is continuous.
@@ -119,13 +119,16 @@ ContactForces Fastrip::compute(const ContactInput& in, TangentialWorkspace* /*ws
   const double spin_weight =
       std::min(1.0, G * cab * cab * cab * C.C23 * k.k23 * std::abs(in.creep.phi) / (0.1 * mu * Fz));
 
+  // chi's rate |phi| / (0.25 |(xi, eta)|) (below), once per call.
+  const double chi_rate = creep_norm > 0.0 ? std::abs(in.creep.phi) / (0.25 * creep_norm) : 0.0;
+
   const auto nx = static_cast<std::size_t>(grid_.nx);
   const StripSums sums = grid_.sum_strips(a, b, [&](std::size_t j, double y, double aj) {
     const double gj = mu * p0 * grid_.t[j];  // mu p0_j: peak of the strip's bound
     // Carter solution of the strip (step 2): adhesion centre d, half-length ar.
+    const double S = (gj > 0.0) ? W / gj : 1.0;  // Carter's slip measure |w| / (mu p0_j)
     double d = 0.0, ar = aj;
     if (W > 0.0) {
-      const double S = (gj > 0.0) ? W / gj : 1.0;
       d = aj * std::min(S, 1.0);
       ar = aj - d;
     }
@@ -137,11 +140,8 @@ ContactForces Fastrip::compute(const ContactInput& in, TangentialWorkspace* /*ws
     // blended by chi = |phi| |(a_j, y_j)| / (0.25 |(xi, eta)|) in [0, 1];
     // and from the leading edge once the strip's creepage alone saturates it
     // (Carter's full slip, S = |w| / (mu p0_j) >= 1), reached at S = 2.
-    const double full = std::clamp((gj > 0.0 ? W / gj : 1.0) - 1.0, 0.0, 1.0) * spin_weight;
-    const double chi = std::max(
-        creep_norm > 0.0 ? std::min(1.0, std::abs(in.creep.phi) * std::sqrt(aj * aj + y * y) / (0.25 * creep_norm))
-                         : 1.0,
-        full);
+    const double full = std::clamp(S - 1.0, 0.0, 1.0) * spin_weight;
+    const double chi = std::max(creep_norm > 0.0 ? std::min(1.0, chi_rate * std::sqrt(aj * aj + y * y)) : 1.0, full);
     const double xs = chi * (d - ar) - (1.0 - chi) * aj;
     double sx = 0.0, sy = 0.0, qprev = 0.0;
     bool slides = false;  // the strip slides from here on (bound reached, or Carter slip zone)
