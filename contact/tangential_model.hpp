@@ -13,6 +13,12 @@
 // unsaturated linear theory ("linear"), which is the small-creepage reference
 // by definition and flags large forces instead.
 //
+// Deep full slip: for a bounded model, creepages whose largest of |xi|, |eta|,
+// |phi| sqrt(ab) exceeds kFullSlipCreepage are scaled down to it before
+// compute() (the force no longer depends on their size, only on their
+// ratios). A non-finite force from any model is a NumericalError naming the
+// model and the contact.
+//
 // Models are created by name through the registry (registry.hpp).
 #pragma once
 
@@ -22,6 +28,9 @@
 #include "contact/types.hpp"
 
 namespace railsim::contact {
+
+// |creepage| beyond which a bounded model sees the creepage scaled down (above).
+inline constexpr double kFullSlipCreepage = 1e6;
 
 class TangentialWorkspace {
  public:
@@ -46,6 +55,10 @@ class TangentialModel {
  protected:
   // The model's own forces (before the Coulomb bound).
   virtual ContactForces compute(const ContactInput& in, TangentialWorkspace* ws) const = 0;
+
+ private:
+  // solve() beyond kFullSlipCreepage (kept out of the common path).
+  ContactForces solve_deep_slip(const ContactInput& in, TangentialWorkspace* ws) const;
 };
 
 }  // namespace railsim::contact

@@ -74,6 +74,47 @@ TEST_CASE("Coulomb bound: no registered model exceeds mu Fz far into saturation"
   CHECK(states == models * 3 * 3 * 3 * 4);  // every state of every bounded model was checked
 }
 
+TEST_CASE("deep full slip: huge creepages give mu Fz along the creepages' direction, never 0 or NaN", "[contact][coulomb][bad_input]") {
+  // Before: |xi| = 1e154 (its square overflows) gave Fx = 0 from every strip
+  // model and NaN from Polach, flagged valid (exit 0 from `railsim contact`).
+  // Reference: the same creepage direction at size 1e5 (|xi|, |eta|, |phi| c up
+  // to 1e5, solved as given: 1e7 times saturation, the force's limit there);
+  // sizes 1e10, 1e154, 1e300 must give the same within 1 % of mu Fz.
+  const Material m{210.0e9, 0.28, 0.3};
+  int checked = 0;
+  for (const auto& e : tangential_models()) {
+    const std::string name = e.name;
+    if (!e.compared_by_default() || name == "linear") continue;
+    TangentialModelOptions o;
+    if (name == "mim") o.grid = 12;
+    const auto model = e.make(o);
+    auto ws = model->make_workspace();
+    ContactInput in;
+    in.patch = hertz_from_semi_axes(6e-3, 4e-3, 60e3, m);
+    in.material = m;
+    const double c = std::sqrt(in.patch.a * in.patch.b), muN = m.mu * in.patch.Fz;
+    for (const double sx : {-1.0, 0.0, 1.0})
+      for (const double sy : {-1.0, 0.0, 0.5})
+        for (const double sp : {-0.3, 0.0, 1.0}) {
+          if (sx == 0.0 && sy == 0.0 && sp == 0.0) continue;
+          in.creep = {sx * 1e5, sy * 1e5, sp / c * 1e5};
+          const ContactForces ref = model->solve(in, ws.get());
+          for (const double size : {1e10, 1e154, 1e300}) {
+            in.creep = {sx * size, sy * size, sp / c * size};
+            const ContactForces f = model->solve(in, ws.get());
+            INFO(name << " direction (" << sx << ", " << sy << ", " << sp << "/c) x " << size << ": F (" << f.Fx << ", "
+                      << f.Fy << "), at 1e5: (" << ref.Fx << ", " << ref.Fy << ")");
+            REQUIRE(std::isfinite(f.Fx));
+            REQUIRE(std::isfinite(f.Fy));
+            CHECK(std::hypot(f.Fx, f.Fy) <= muN * (1.0 + 1e-12));
+            CHECK(std::hypot(f.Fx - ref.Fx, f.Fy - ref.Fy) <= 0.01 * muN);
+            ++checked;
+          }
+        }
+  }
+  CHECK(checked >= 8 * 26 * 3);
+}
+
 TEST_CASE("Coulomb bound: Polach's own friction law bounds Polach's force", "[contact][coulomb][polach]") {
   // mu(w) = mu0 [(1 - A) exp(-B w) + A]: at slip velocity w the bound is mu(w) Fz.
   const Material m{210.0e9, 0.28, 0.3};
