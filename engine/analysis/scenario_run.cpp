@@ -717,6 +717,7 @@ Evaluation evaluate_history(const engine::Scenario& sc, const engine::SafetySett
 results::Json scenario_warnings(const Scenario& sc) {
   results::Json warn = results::Json::array();
   for (const std::string& w : sc.warnings) warn.push(w);
+  for (const std::string& w : sc.run_warnings) warn.push(w);
   return warn;
 }
 
@@ -726,6 +727,7 @@ ScenarioRunResult run_scenario(const Scenario& sc, const ScenarioRunOptions& o) 
   namespace fs = std::filesystem;
   // The evaluation's settings first: a bad running_safety section is bad input before any work.
   const SafetySettings settings = sc.running_safety ? load_safety_settings(*sc.running_safety) : SafetySettings{};
+  for (const std::string& w : sc.run_warnings) spdlog::warn("{}", w);
   const bool files = !o.out_dir.empty();
   if (files) {
     std::error_code ec;

@@ -130,14 +130,13 @@ void read_motion(const InputNode& root, double track_length, Scenario& sc) {
   if (s_end > track_length * (1.0 + 1e-9)) {
     const double v_avg = (s_end - lead - m.speed.s0) / sc.duration;
     const double t_leave = v_avg > 0.0 ? std::max(0.0, track_length - lead - m.speed.s0) / v_avg : 0.0;
-    sc.warnings.push_back(root.at("duration").where() + ": key 'duration': at " +
+    sc.run_warnings.push_back(root.at("duration").where() + ": key 'duration': at " +
                           config::format_number(m.speed.v0 * 3.6) + " km/h for " + config::format_number(sc.duration) +
                           " s the leading wheelset ends at track distance " + config::format_number(s_end) +
                           " m, past the track's defined length " + config::format_number(track_length) +
                           " m (left at about t = " + config::format_number(t_leave) +
                           " s); beyond it the track is the extension of its end without irregularities: shorten "
                           "the duration or lengthen the track");
-    spdlog::warn("{}", sc.warnings.back());
   }
   sc.output_interval = root.has("output_interval") ? root.in_range("output_interval", 0.0, sc.duration, true) : 0.01;
   // Bounded output: the run keeps every sample in memory (RunHistory) and writes it (channels.csv).

@@ -98,6 +98,11 @@ struct Scenario {
   // Legal but implausible inputs (physics sanity), "file:line: key 'k': value
   // ... (usual range ...)"; also logged as warnings when read.
   std::vector<std::string> warnings;
+  // Warnings about the scenario's own run, its speed and duration (the leading
+  // wheelset running past the track's defined length): logged and recorded by
+  // run_scenario only, not by analyses that choose their own speeds and
+  // durations (critical-speed, modes).
+  std::vector<std::string> run_warnings;
   // The scenario's `running_safety:` section, read by the run's evaluation
   // (engine/analysis/safety_settings.hpp); empty when absent.
   std::optional<config::InputNode> running_safety;

@@ -285,6 +285,25 @@ TEST_CASE("railsim run: --set through a YAML alias changes that place only, past
   CHECK(w.find("at 144 km/h for 15 s the leading wheelset ends at track distance 600 m, past the track's defined "
                "length 400 m") != std::string::npos);
   CHECK(w.find("t = 10 s") != std::string::npos);
+  CHECK(r.output.find("past the track's defined length 400 m") != std::string::npos);  // and said on the terminal
+  // The warning is about the scenario's own run: `modes` (its own speeds, no
+  // run) loads the same 15 s scenario without it.
+  std::string text = test::read_text(s);
+  const auto at = text.find("duration: 1\n");
+  REQUIRE(at != std::string::npos);
+  text.replace(at, 12, "duration: 15\n");
+  const auto veh = text.find("../../../vehicles/");
+  REQUIRE(veh != std::string::npos);
+  text.replace(veh, 18, test::source_path("vehicles/"));
+  const std::string longer = out + "/long_run.yaml";
+  std::ofstream(longer) << text;
+  r = test::run_railsim("modes " + longer + " --v-min 20 --v-max 30 --out " + out + "/modes");
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.output.find("past the track") == std::string::npos);
+  r = test::run_railsim("run " + longer + " --set output_interval=0.05 --out " + out + "/run15");
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.output.find("past the track's defined length 400 m") != std::string::npos);
 }
 
 TEST_CASE("railsim run: a rerun that fails leaves none of the previous run's files", "[cli][run][robustness]") {
