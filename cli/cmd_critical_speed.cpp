@@ -107,6 +107,7 @@ std::string kmh(double v) {
 std::string verdict_text(const engine::CriticalSpeedOutcome& o) {
   if (!o.bifurcation.undetermined.empty()) return "undetermined (see below)";
   if (!o.ramping.derailment.empty()) return "none (derailed, see below)";
+  if (!o.ramping.range_stop.empty()) return "none (left the model's range, see below)";
   return kmh(o.critical);
 }
 
@@ -124,11 +125,12 @@ int verdict_exit(const engine::BifurcationResult& b, const std::string& what, in
   return std::max(so_far, code);
 }
 
-// A ramp that derailed (the physics, a result: exit 0): its message, no critical speed.
+// A ramp that derailed or whose grown motion left the model's range (the
+// physics, a result: exit 0): its message, no critical speed.
 void print_ramp_derailment(const engine::RampingResult& r, const std::string& what) {
-  if (r.derailment.empty()) return;
+  if (!r.stopped()) return;
   std::fprintf(stderr, "railsim critical-speed: %sno critical speed: %s\n", what.empty() ? "" : (what + ": ").c_str(),
-               r.derailment.c_str());
+               (r.derailment.empty() ? r.range_stop : r.derailment).c_str());
 }
 
 void print_ramp_start(const engine::CriticalSpeedStudySettings& s, const char* suffix) {

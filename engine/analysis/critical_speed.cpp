@@ -521,6 +521,26 @@ RampingResult ramping(const Scenario& scenario, const RampingOptions& o) {
     res.critical_speed = kNaN;
     spdlog::warn("ramping: {}", res.derailment);
   };
+  // A stop on leaving the model's range: a result when the lateral motion of
+  // this phase (records from `first`) had grown by a tenth of the threshold
+  // over its start value and the threshold (the bifurcation sweep's rule,
+  // run_point), else rethrown as the numerical failure it is.
+  const auto left_range = [&](const ModelRangeError& e, std::size_t first, const char* phase) {
+    double peak = 0.0;
+    for (std::size_t i = first; i < ymax_all.size(); ++i) peak = std::max(peak, ymax_all[i]);
+    const double start = first < ymax_all.size() ? ymax_all[first] : 0.0;
+    const double grown = peak - std::max(start, o.threshold);
+    if (!(grown > 0.1 * o.threshold))
+      throw NumericalError(std::string("ramping: numerical failure ") + phase + " (the run left the model's range "
+                           "before its motion grew): " + e.what());
+    char head[200];
+    std::snprintf(head, sizeof head, "the lateral motion grew by %.2f mm and left the model's range %s: ", grown * 1e3,
+                  phase);
+    res.range_stop = head + std::string(e.what()) +
+                     " (hunting beyond what the model covers: lower the start speed, or use the full wheelset model)";
+    res.critical_speed = kNaN;
+    spdlog::warn("ramping: {}", res.range_stop);
+  };
   try {
     simulate(sc.model, sc.integrator, disturbed_state(sc, o.disturbance), o.settle_time, o.output_interval,
              record(sc, 0.0));
@@ -529,6 +549,10 @@ RampingResult ramping(const Scenario& scenario, const RampingOptions& o) {
     std::snprintf(phase, sizeof phase, "while settling at the start speed %.1f km/h (lower the start speed)",
                   o.v_start * 3.6);
     derailed(e, phase);
+  } catch (const ModelRangeError& e) {
+    char phase[96];
+    std::snprintf(phase, sizeof phase, "while settling at the start speed %.1f km/h", o.v_start * 3.6);
+    left_range(e, 0, phase);
   } catch (const NumericalError& e) {
     throw NumericalError(std::string("ramping: numerical failure while settling at the start speed: ") + e.what());
   }
@@ -536,9 +560,9 @@ RampingResult ramping(const Scenario& scenario, const RampingOptions& o) {
   double late_peak = 0.0;
   for (std::size_t i = 0; i < t_all.size(); ++i)
     if (t_all[i] > o.settle_time - 1.0) late_peak = std::max(late_peak, ymax_all[i]);
-  res.hunting_at_start = !res.derailment.empty() || late_peak > o.threshold;
-  if (!res.derailment.empty()) {
-    // No ramp: the record ends where the vehicle derailed.
+  res.hunting_at_start = res.stopped() || late_peak > o.threshold;
+  if (res.stopped()) {
+    // No ramp: the record ends where the vehicle derailed or left the model's range.
   } else if (!res.hunting_at_start) {
     res.critical_speed = kNaN;
     spdlog::warn("ramping: no hunting at {:.1f} km/h (peak {:.2f} mm in the last second): raise the start speed",
@@ -554,10 +578,12 @@ RampingResult ramping(const Scenario& scenario, const RampingOptions& o) {
       simulate(ramp.model, ramp.integrator, x_end, duration, o.output_interval, record(ramp, o.settle_time));
     } catch (const DerailmentError& e) {
       derailed(e, "during the ramp");
+    } catch (const ModelRangeError& e) {
+      left_range(e, first_ramp, "during the ramp");
     } catch (const NumericalError& e) {
       throw NumericalError(std::string("ramping: numerical failure during the ramp: ") + e.what());
     }
-    if (res.derailment.empty()) {
+    if (!res.stopped()) {
       long at = -1;
       res.critical_speed = collapse_speed(t_all, v_all, ymax_all, first_ramp, o, res.hunting_at_end, at);
       if (at >= 0) {

@@ -146,12 +146,21 @@ struct RampingResult {
   // settling at the start speed or during the ramp: the message, and no
   // critical speed (the record keeps what was run). Empty: it did not.
   std::string derailment;
+  // The lateral motion grew until it left the model's range (ModelRangeError:
+  // the lateral model's wheel lift, a flangeless geometry run out of) while
+  // settling or during the ramp: hunting beyond what the model covers, as a
+  // bifurcation sweep counts it; the message, no critical speed. (Such a stop
+  // before the motion grew is a numerical failure: NumericalError.)
+  std::string range_stop;
+  // Either of the two: the ramp ended on the physics, not at v_end.
+  bool stopped() const { return !derailment.empty() || !range_stop.empty(); }
   std::vector<double> time, speed, max_lateral;  // envelope record (for charts)
   double wall_time = 0.0;
 };
 
 // A numerical failure of either phase throws NumericalError (no verdict); a
-// derailment is a result (RampingResult::derailment).
+// derailment, or the grown motion leaving the model's range, is a result
+// (RampingResult::derailment, range_stop).
 RampingResult ramping(const Scenario& scenario, const RampingOptions& options);
 
 // Linear critical speed by bisection of the largest real part over [v_lo, v_hi];

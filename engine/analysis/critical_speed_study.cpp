@@ -164,6 +164,7 @@ Json critical_speed_summary(const Scenario& sc, const CriticalSpeedStudySettings
     s.set("critical_speed_read_at_time_s", number_or_null(r.critical_time));
     s.set("envelope_at_critical_speed_mm", number_or_null(r.critical_amplitude, 1e3));
     if (!r.derailment.empty()) s.set("derailment", r.derailment);
+    if (!r.range_stop.empty()) s.set("left_model_range", r.range_stop);
   }
   s.set("scenario", sc.name);
   s.set("vehicle", sc.model.vehicle_name);

@@ -276,10 +276,10 @@ ReductionStudyResult reduction_study(const Scenario& base, const ReductionStudyO
       const std::size_t i = static_cast<std::size_t>(p.index);
       const auto te = std::chrono::steady_clock::now();
       RampingResult r;
-      double stopped = 0.0;  // 0 ran to the end, 1 numerical failure, 2 derailed
+      double stopped = 0.0;  // 0 ran to the end, 1 numerical failure, 2 derailed or left the model's range
       try {
         r = ramping(res.entries[i].scenario, o.ramping);
-        if (!r.derailment.empty()) stopped = 2.0;
+        if (r.stopped()) stopped = 2.0;
       } catch (const NumericalError& err) {
         spdlog::error("reductions: {}: ramp stopped on a numerical failure ({}); no verdict", res.entries[i].label,
                       err.what());

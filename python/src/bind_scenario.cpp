@@ -150,6 +150,7 @@ py::dict critical_speed(const engine::Scenario& base, const std::string& method,
     d["hunting_at_start"] = rr.hunting_at_start;
     d["hunting_at_end"] = rr.hunting_at_end;
     d["derailment"] = rr.derailment.empty() ? py::object(py::none()) : py::object(py::str(rr.derailment));
+    d["left_model_range"] = rr.range_stop.empty() ? py::object(py::none()) : py::object(py::str(rr.range_stop));
     settings["start_speed_kmh"] = st.ramp_start * 3.6, settings["disturbance_mm"] = st.ramp_disturbance * 1e3;
     settings["deceleration_m_s2"] = st.deceleration;
   }

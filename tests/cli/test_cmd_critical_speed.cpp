@@ -383,3 +383,25 @@ TEST_CASE("railsim critical-speed: runs that lift a wheel after their motion gre
   CHECK(s["points_by_state"]["stopped"].get<int>() > 0);
   CHECK(r.output.find("run stopped after its lateral motion grew") != std::string::npos);
 }
+
+TEST_CASE("railsim critical-speed --method ramping: a ramp whose grown motion leaves the model's range is a result",
+          "[cli][critical_speed][robustness]") {
+  // The shipped single wheelset from 300 km/h (default --v-max): settling there, the hunting grows from the
+  // 5 mm disturbance until a wheel unloads at t = 0.18 s, which the lateral model cannot follow. As in the sweep
+  // above, that is the instability (a result, exit 0: no critical speed by ramping from there), not a numerical
+  // failure (it was exit 3 "numerical failure while settling").
+  const std::string dir = railsim::test::temp_dir("cli_cs_ramp_range");
+  const auto r = run_railsim("critical-speed '" + railsim::test::source_path("scenarios/single_wheelset.yaml") +
+                             "' --method ramping --out '" + dir + "'");
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.output.find("critical speed     none (left the model's range, see below)") != std::string::npos);
+  CHECK(r.output.find("the lateral motion grew by") != std::string::npos);
+  CHECK(r.output.find("while settling at the start speed 300.0 km/h") != std::string::npos);
+  const auto s = railsim::test::read_json(dir + "/summary.json");
+  CHECK(s["critical_speed_kmh"].is_null());
+  CHECK(s["hunting_at_start"] == true);
+  CHECK(std::string(s["left_model_range"]).find("loss of contact") != std::string::npos);
+  CHECK_FALSE(s.contains("derailment"));
+  // (A ramp stopped by the integrator stays a numerical failure, exit 3: the forced blow-up test above.)
+}
