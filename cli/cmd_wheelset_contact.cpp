@@ -17,6 +17,7 @@
 //   strip: 2.5e-4           # [m], optional strip width of the normal contact
 //   positions:              # y toward the left wheel [m], yaw leading end to the left [rad], Fz per wheel [N]
 //     - {y: 0.001, yaw: 0.0024, Fz: 1.0e4, roll: -1.1e-4, omega: 4.348}   # roll [rad], omega [rad/s] optional
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -25,6 +26,7 @@
 #include "cli/commands.hpp"
 #include "cli/support_option_checks.hpp"
 #include "config/yaml_input.hpp"
+#include "contact/geometry/profile.hpp"
 #include "contact/geometry/wheel_rail_geometry.hpp"
 #include "core/errors.hpp"
 #include "engine/analysis/wheelset_contact_cases.hpp"
@@ -43,7 +45,7 @@ struct WheelsetContactArgs {
   double tolerance = 0.0;
 };
 
-constexpr int kPatchColumns = 3;  // patches per wheel written
+constexpr int kMinPatchColumns = 3;  // patches per wheel written: at least 3, more when a wheel has more
 
 int run_wheelset_contact(const WheelsetContactArgs& a) {
   namespace fs = std::filesystem;
@@ -56,7 +58,12 @@ int run_wheelset_contact(const WheelsetContactArgs& a) {
     if (!root.has(key)) return fallback;
     const std::string v = root.string(key);
     const fs::path p = fs::path(v).is_absolute() ? fs::path(v) : fs::path(base) / v;
-    return fs::exists(p) ? p.lexically_normal().string() : v;
+    if (fs::exists(p)) return p.lexically_normal().string();
+    if (contact::is_shipped_profile_name(v)) return v;
+    // Not the working folder's file of that name: the case file means its own folder.
+    root.at(key).fail("no profile file " + p.lexically_normal().string() +
+                      " (a relative path is taken from the case file's folder) and not a shipped profile name (" +
+                      contact::shipped_profile_names() + ")");
   };
   s.wheel = profile("wheel", s.wheel);
   s.rail = profile("rail", s.rail);
@@ -94,6 +101,9 @@ int run_wheelset_contact(const WheelsetContactArgs& a) {
   }
   if (pos.empty()) root.at("positions").fail("expected at least one position");
   const auto res = engine::wheelset_contact(s, pos);
+  int patch_columns = kMinPatchColumns;  // every patch of every wheel gets its columns
+  for (const auto& r : res)
+    for (const auto& w : r.wheel) patch_columns = std::max(patch_columns, int(w.patches.size()));
 
   std::vector<std::string> cols = {"y", "yaw", "roll"};
   for (const char* w : {"left", "right"})
@@ -101,14 +111,14 @@ int run_wheelset_contact(const WheelsetContactArgs& a) {
   const char* fields[] = {"N", "y_wheel", "y_rail", "y_track", "x_track", "rolling_radius", "contact_angle",
                           "a", "b", "xi", "eta", "spin", "Fx_patch", "Fy_patch"};
   for (const char* w : {"left", "right"})
-    for (int k = 1; k <= kPatchColumns; ++k)
+    for (int k = 1; k <= patch_columns; ++k)
       for (const char* f : fields) cols.push_back(std::string(w) + std::to_string(k) + "_" + f);
   results::CsvWriter csv(a.out, cols, false, 0, 10);
   for (const auto& r : res) {
     csv.cell(r.position.y).cell(r.position.yaw).cell(r.roll);
     for (const auto& w : r.wheel) csv.cell(w.Fx).cell(w.Fy).cell(w.Fz).cell(long(w.patches.size()));
     for (const auto& w : r.wheel)
-      for (int k = 0; k < kPatchColumns; ++k) {
+      for (int k = 0; k < patch_columns; ++k) {
         if (k < int(w.patches.size())) {
           const auto& p = w.patches[std::size_t(k)];
           for (double v : {p.N, p.y_wheel, p.y_rail, p.y_track, p.x_track, p.rolling_radius, p.contact_angle, p.a, p.b,

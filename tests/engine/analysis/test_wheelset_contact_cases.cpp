@@ -213,7 +213,10 @@ TEST_CASE("wheelset-contact: bad cases exit 2 naming the key", "[engine][analysi
                         Case{head + "positions:\n  - {y: 0.5, Fz: 1e4}\n", "positions[0].y"},
                         Case{head + "positions:\n  - {y: .nan, Fz: 1e4}\n", "positions[0].y"},
                         Case{head + "positions:\n  - {y: 0.001, yaw: 0.5, Fz: 1e4}\n", "yaw"},
-                        Case{head + "positions: []\n", "positions"}}) {
+                        Case{head + "positions: []\n", "positions"},
+                        // A profile path is the case file's folder's, never the working folder's.
+                        Case{"wheel: no_such_wheel.csv\nrail: UIC60\npositions:\n  - {y: 0.001, Fz: 1e4}\n",
+                             "key 'wheel': no profile file"}}) {
     const std::string f = write("c.yaml", c.text);
     const auto r = test::run_railsim("wheelset-contact " + f + " --out " + dir + "/o.csv");
     INFO(c.text << "\n" << r.output);
@@ -221,4 +224,33 @@ TEST_CASE("wheelset-contact: bad cases exit 2 naming the key", "[engine][analysi
     CHECK(r.output.find("c.yaml") != std::string::npos);
     CHECK(r.output.find(c.expect) != std::string::npos);
   }
+}
+
+TEST_CASE("wheelset-contact: every patch of a wheel is written, however many", "[engine][analysis][contact]") {
+  // S1002 with a wavy tread (0.05 mm, 4 mm wavelength) on UIC60 at 100 kN: four patches on a wheel
+  // (the CSV held three, and the largest patch, 70 kN, was lost without a word).
+  const std::string dir = test::temp_dir("wheelset_contact_patches");
+  const std::string f = dir + "/wavy.yaml";
+  std::ofstream(f) << "wheel: " << test::data_path("contact_geometry/s1002_wavy_tread.csv")
+                   << "\nrail: UIC60_MBench\ninclination: 0\ngauge: 1.435\nflange_back: 1.360\nback_face: -0.070\n"
+                      "nominal_radius: 0.46\nmaterial: {G: 8.2e10, nu: 0.28, mu: 0.3}\nspeed: 2.0\n"
+                      "positions:\n  - {y: 0, Fz: 1e5}\n  - {y: 0.001, Fz: 1e5}\n";
+  const auto r = test::run_railsim("wheelset-contact " + f + " --out " + dir + "/w.csv");
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  const auto t = results::read_csv(dir + "/w.csv");
+  REQUIRE(t.rows.size() == 2);
+  int most = 0;
+  for (std::size_t i = 0; i < t.rows.size(); ++i)
+    for (const std::string w : {"left", "right"}) {
+      const int n = int(t.number(i, w + "_patches"));
+      most = std::max(most, n);
+      double N = 0.0;
+      for (int k = 1; k <= n; ++k) N += t.number(i, w + std::to_string(k) + "_N");
+      INFO(w << " wheel at y = " << t.number(i, "y") << ": " << n << " patches, sum N " << N << ", Fz "
+             << t.number(i, w + "_Fz"));
+      // The normal loads of the patches carry the wheel's vertical force (contact angles of a few degrees).
+      CHECK(N == Approx(std::abs(t.number(i, w + "_Fz"))).epsilon(0.02));
+    }
+  CHECK(most >= 4);
 }
