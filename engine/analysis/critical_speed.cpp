@@ -8,14 +8,20 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
 #include <limits>
 
 #include "contact/registry.hpp"
+#include "core/atomic_file.hpp"
+#include "core/content_hash.hpp"
 #include "core/errors.hpp"
 #include "engine/analysis/state_store.hpp"
 #include "engine/linearisation.hpp"
 #include "engine/elements/rigid_body.hpp"
 #include "engine/simulation.hpp"
+#include "engine/system.hpp"
 #include "results/limit_cycle.hpp"
 
 namespace railsim::engine {
@@ -350,11 +356,90 @@ double linear_critical_speed(const Scenario& scenario, double v_lo, double v_hi)
   return critical_speed(scenario.model, v_lo, v_hi);
 }
 
+namespace {
+
+// What a sweep's points depend on besides their speed and branch, one
+// "key value" line each: the sweep's options, the integrator's settings and
+// the model itself, seen through its right-hand side at the top speed from
+// the down branch's disturbed state and from the start state (an FNV-1a hash
+// of the state derivatives: any change of the vehicle, track, contact model
+// or reduction changes it, as it changes the runs).
+std::string sweep_settings(const Scenario& scenario, const BifurcationOptions& o) {
+  const auto num = [](double v) {
+    char b[40];
+    std::snprintf(b, sizeof b, "%.17g", v);
+    return std::string(b);
+  };
+  std::string s = "railsim bifurcation sweep settings 1\n";
+  s += "duration_s " + num(o.duration) + "\n";
+  s += "large_disturbance_m " + num(o.large_disturbance) + "\n";
+  s += "small_disturbance_m " + num(o.small_disturbance) + "\n";
+  s += "threshold_m " + num(o.threshold) + "\n";
+  s += "tail_fraction " + num(o.tail_fraction) + "\n";
+  s += "decay_tolerance " + num(o.decay_tolerance) + "\n";
+  const IntegratorOptions& i = scenario.integrator;
+  s += "integrator " + i.method + " rtol " + num(i.rtol) + " atol " + num(i.atol) + " max_step " + num(i.max_step) +
+       " initial_step " + num(i.initial_step) + " min_step " + num(i.min_step) + " max_steps " +
+       std::to_string(i.max_steps) + " jacobian " + i.jacobian + " linear_solver " + i.linear_solver + " max_order " +
+       std::to_string(i.max_order) + " stability_limit_detection " + std::to_string(int(i.stability_limit_detection)) +
+       " atol_contact_modes " + num(i.atol_contact_modes) + "\n";
+  const Scenario sc = at_speed(scenario, o.v_max, 0.0);
+  Data data(sc.model);
+  Eigen::VectorXd xdot(sc.model.n_states);
+  ContentHash h;
+  for (const Eigen::VectorXd& x : {disturbed_state(sc, o.large_disturbance), Eigen::VectorXd(sc.x0)}) {
+    rhs(sc.model, data, 0.0, x.data(), xdot.data());
+    h.bytes(xdot.data(), sizeof(double) * std::size_t(xdot.size()));
+  }
+  char hex[24];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h.value()));
+  s += "model " + sc.name + " " + std::to_string(sc.model.n_states) + " states, equations " + hex + "\n";
+  return s;
+}
+
+// A sweep resumes from its points file only when it was made with the same
+// settings (OUT.settings, written before the first point): otherwise its
+// points would be taken for this sweep's. InputError naming what differs.
+void check_resumable(const Scenario& scenario, const BifurcationOptions& o, const std::string& points_csv) {
+  namespace fs = std::filesystem;
+  const std::string file = points_csv + ".settings";
+  const std::string now = sweep_settings(scenario, o);
+  std::error_code ec;
+  if (fs::exists(file, ec)) {
+    std::ifstream in(file, std::ios::binary);
+    const std::string before((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (before == now) return;
+    // The first line that differs, old and new.
+    std::istringstream a(before), b(now);
+    std::string la, lb;
+    while (std::getline(a, la) && std::getline(b, lb) && la == lb) {
+    }
+    throw InputError(points_csv + ": this folder holds a sweep made with other settings (" + file + ": '" + la +
+                     "', now '" + lb + "'); its points are not this sweep's: give another output folder, or remove "
+                     "this one to start again");
+  }
+  bool points = false;
+  for (const std::string& f : {points_csv, points_csv + ".part0", points_csv + ".sweep.csv", points_csv + ".chain.csv"})
+    points = points || fs::exists(f, ec);
+  if (points)
+    throw InputError(points_csv + ": this folder holds sweep points without their settings file (" + file +
+                     "; written by an earlier version): they cannot be checked against this sweep's settings; give "
+                     "another output folder, or remove this one to start again");
+  if (mpi_context().rank == 0) {
+    const fs::path dir = fs::path(file).parent_path();
+    if (!dir.empty()) fs::create_directories(dir);
+    write_file_atomically(file, now);
+  }
+}
+
+}  // namespace
+
 BifurcationResult bifurcation_sweep(const Scenario& scenario, const BifurcationOptions& o,
                                     const std::string& points_csv) {
   if (!(o.v_min > 0.0 && o.v_max > o.v_min && o.v_step > 0.0))
     throw InputError("bifurcation sweep: need 0 < v_min < v_max and v_step > 0");
   const SweepPlan plan = sweep_plan(o);
+  check_resumable(scenario, o, points_csv);
   if (o.continuation) return continuation_sweep(scenario, o, plan, points_csv);
   const auto fn = [&](const SweepPoint& p) { return run_sweep_point(scenario, o, plan, p, nullptr); };
   return collect(checked_points(run_sweep(plan.points, fn, sweep_options(o, points_csv, o.use_mpi)), points_csv), o);

@@ -405,3 +405,46 @@ TEST_CASE("railsim critical-speed --method ramping: a ramp whose grown motion le
   CHECK_FALSE(s.contains("derailment"));
   // (A ramp stopped by the integrator stays a numerical failure, exit 3: the forced blow-up test above.)
 }
+
+TEST_CASE("railsim critical-speed: a folder swept with other settings is refused, not resumed",
+          "[cli][critical_speed][robustness]") {
+  // Before: a rerun with --duration 6 in the folder of a 0.5 s sweep said "resuming, 3 of 3 points already
+  // finished" and reported the 0.5 s points as the 6 s sweep's; an edited scenario (creep coefficients
+  // doubled) was resumed over as well. The folder's settings file (bifurcation.csv.settings) holds the
+  // sweep's options, the integrator's settings and a hash of the model's equations.
+  const std::string dir = railsim::test::temp_dir("cli_cs_resume_settings");
+  const std::string src = railsim::test::source_path("scenarios/single_wheelset.yaml");
+  const std::string sweep = " --v-min 100 --v-max 200 --v-step 50 --no-up-branch --out '" + dir + "/out'";
+  auto r = run_railsim("critical-speed '" + src + "' --duration 0.5" + sweep);
+  INFO(r.output);
+  REQUIRE(r.exit_code == 2);  // too short for a verdict, as it should be
+  REQUIRE(std::filesystem::exists(dir + "/out/bifurcation.csv.settings"));
+  r = run_railsim("critical-speed '" + src + "' --duration 6" + sweep);
+  INFO(r.output);
+  CHECK(r.exit_code == 2);
+  CHECK(r.output.find("other settings") != std::string::npos);
+  CHECK(r.output.find("'duration_s 0.5', now 'duration_s 6'") != std::string::npos);
+  CHECK(r.output.find("resuming") == std::string::npos);
+  // The same settings resume (every point already there).
+  r = run_railsim("critical-speed '" + src + "' --duration 0.5" + sweep);
+  CHECK(r.output.find("resuming, 3 of 3 points already finished") != std::string::npos);
+  // The scenario edited (creep coefficients doubled): the model's equations differ.
+  std::string text = railsim::test::read_text(src);
+  const auto veh = text.find("../vehicles/");
+  REQUIRE(veh != std::string::npos);
+  text.replace(veh, 12, railsim::test::source_path("vehicles/"));
+  const auto f = text.find("{f11: 1.0e7, f22: 1.0e7}");
+  REQUIRE(f != std::string::npos);
+  text.replace(f, 24, "{f11: 2.0e7, f22: 2.0e7}");
+  std::ofstream(dir + "/single_wheelset.yaml") << text;
+  r = run_railsim("critical-speed '" + dir + "/single_wheelset.yaml' --duration 0.5" + sweep);
+  INFO(r.output);
+  CHECK(r.exit_code == 2);
+  CHECK(r.output.find("other settings") != std::string::npos);
+  CHECK(r.output.find("equations") != std::string::npos);
+  // Points without a settings file (an earlier version's folder) cannot be checked: refused.
+  std::filesystem::remove(dir + "/out/bifurcation.csv.settings");
+  r = run_railsim("critical-speed '" + src + "' --duration 0.5" + sweep);
+  CHECK(r.exit_code == 2);
+  CHECK(r.output.find("without their settings file") != std::string::npos);
+}
