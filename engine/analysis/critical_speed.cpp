@@ -418,18 +418,19 @@ void check_resumable(const Scenario& scenario, const BifurcationOptions& o, cons
                      "', now '" + lb + "'); its points are not this sweep's: give another output folder, or remove "
                      "this one to start again");
   }
+  // Under mpirun rank 0 alone checks for settings-less points and writes the
+  // file (another rank may see rank 0's first points, written after it).
+  if (mpi_context().rank != 0) return;
   bool points = false;
   for (const std::string& f : {points_csv, points_csv + ".part0", points_csv + ".sweep.csv", points_csv + ".chain.csv"})
-    points = points || fs::exists(f, ec);
+    points = points || (fs::is_regular_file(f, ec) && fs::file_size(f, ec) > 0 && !ec);
   if (points)
     throw InputError(points_csv + ": this folder holds sweep points without their settings file (" + file +
                      "; written by an earlier version): they cannot be checked against this sweep's settings; give "
                      "another output folder, or remove this one to start again");
-  if (mpi_context().rank == 0) {
-    const fs::path dir = fs::path(file).parent_path();
-    if (!dir.empty()) fs::create_directories(dir);
-    write_file_atomically(file, now);
-  }
+  const fs::path dir = fs::path(file).parent_path();
+  if (!dir.empty()) fs::create_directories(dir);
+  write_file_atomically(file, now);
 }
 
 }  // namespace

@@ -317,6 +317,7 @@ TEST_CASE("bifurcation sweep: numerical failures and runs too short give no crit
   }
   SECTION("a resumed sweep refuses a damaged points file instead of reading a verdict from it") {
     const std::string out = railsim::test::temp_dir("damaged_points") + "/points.csv";
+    bifurcation_sweep(base, o, out);  // the folder's settings file (points.csv.settings), then its points damaged
     std::ofstream(out) << "index,key,speed_m_s,down,amplitude_m,frequency_hz,growth,stop\n"
                           "0,down:48,48,1,0.004,2.1,0,0\n1,down:46,46,1,nan,2.0,0,0\n2,down:44,44,1,0.0001,0,0,0\n";
     CHECK_THROWS_WITH(bifurcation_sweep(base, o, out),
