@@ -30,7 +30,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/support_option_checks.hpp"
-#include "cli/support_speed_range.hpp"
+#include "engine/analysis/sweep_limits.hpp"
 #include "contact/reduction.hpp"
 #include "contact/registry.hpp"
 #include "core/errors.hpp"
@@ -285,7 +285,7 @@ int run_critical_speed(const CriticalSpeedArgs& a) {
   if (mpi.rank == 0) lock.emplace(a.out);
   engine::Scenario base = engine::load_scenario(a.scenario);
   const engine::CriticalSpeedStudySettings s = study_settings(a, base.critical_speed);
-  check_speed_range(s.v_min * 3.6, s.v_max * 3.6, s.v_step * 3.6);
+  engine::check_speed_range(s.v_min * 3.6, s.v_max * 3.6, s.v_step * 3.6);
   if (!a.reduction.empty() && !a.reductions.empty())
     throw InputError("--reduction and --reductions: give one of them (--reductions runs every entry of its list)");
   if (!a.reductions.empty() && a.compare_models)
@@ -447,16 +447,16 @@ void register_critical_speed(CLI::App& app, CommandRunner& run) {
   cmd->add_option("--v-max", a->v_max_kmh, "Highest speed, also the ramping start speed [km/h] (default: scenario, else 300)");
   cmd->add_option("--v-step", a->v_step_kmh, "Speed step of the bifurcation sweep [km/h] (default: scenario, else 20)");
   cmd->add_option("--duration", a->duration, "Simulated time per sweep point [s] (default: scenario, else 6)")
-      ->check(number_range(0.5, 600.0));
+      ->check(number_range(engine::kDurationRange.lo, engine::kDurationRange.hi));
   cmd->add_option("--disturbance", a->large,
                   "Large initial lateral shift (down branch, ramping) [mm] (default: scenario, else 8)")
-      ->check(number_range(0.01, 20.0));
+      ->check(number_range(engine::kDisturbanceRangeMm.lo, engine::kDisturbanceRangeMm.hi));
   cmd->add_option("--small-disturbance", a->small, "Small initial lateral shift (up branch) [mm] (default: scenario, else 0.5)")
-      ->check(number_range(0.001, 20.0));
+      ->check(number_range(engine::kSmallDisturbanceRangeMm.lo, engine::kSmallDisturbanceRangeMm.hi));
   cmd->add_option("--threshold", a->threshold, "Settled amplitude that counts as hunting [mm] (default: scenario, else 0.5)")
-      ->check(number_range(0.001, 20.0));
+      ->check(number_range(engine::kThresholdRangeMm.lo, engine::kThresholdRangeMm.hi));
   cmd->add_option("--deceleration", a->deceleration, "Ramping deceleration [m/s^2] (default: scenario, else 0.5)")
-      ->check(number_range(0.001, 10.0));
+      ->check(number_range(engine::kDecelerationRange.lo, engine::kDecelerationRange.hi));
   cmd->add_flag("!--no-up-branch", a->up_branch, "Sweep only the strongly disturbed (down) branch");
   auto* on = cmd->add_flag("--continuation", a->continuation_on,
                            "Path following on the down branch: below its lowest hunting speed, each speed starts "
@@ -465,7 +465,7 @@ void register_critical_speed(CLI::App& app, CommandRunner& run) {
   cmd->add_flag("--no-continuation", a->continuation_off, "Every down-branch speed from the large disturbance")
       ->excludes(on);
   cmd->add_option("--threads", a->threads, "Worker threads per process (0: all cores)")
-      ->check(CLI::Range(0, 256))
+      ->check(CLI::Range(0, engine::kMaxThreads))
       ->capture_default_str();
   cmd->callback([a, &run] { run = [a] { return run_critical_speed(*a); }; });
 }

@@ -17,7 +17,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
-#include "cli/support_speed_range.hpp"
+#include "engine/analysis/sweep_limits.hpp"
 #include "core/errors.hpp"
 #include "core/output_lock.hpp"
 #include "engine/analysis/mode_sweep.hpp"
@@ -39,7 +39,7 @@ struct ModesArgs {
 };
 
 int run_modes(const ModesArgs& a) {
-  const int n = check_speed_range(a.v_min_kmh, a.v_max_kmh, a.v_step_kmh);
+  const int n = engine::check_speed_range(a.v_min_kmh, a.v_max_kmh, a.v_step_kmh);
   const OutputLock lock(a.out);  // one writer per output folder
   const engine::Scenario sc = engine::load_scenario(a.scenario);
   std::error_code ec;

@@ -21,6 +21,7 @@
 #include "core/errors.hpp"
 #include "engine/analysis/critical_speed.hpp"
 #include "engine/analysis/critical_speed_study.hpp"
+#include "engine/analysis/sweep_limits.hpp"
 #include "engine/analysis/mode_sweep.hpp"
 #include "engine/analysis/scenario_run.hpp"
 #include "engine/io/scenario.hpp"
@@ -94,8 +95,9 @@ py::dict critical_speed(const engine::Scenario& base, const std::string& method,
   engine::apply_overrides(st, given);
   st.up_branch = up_branch;
   st.threads = threads;
-  if (!(st.v_min >= 0 && st.v_max > st.v_min && st.v_step > 0))
-    throw InputError("speed range: need 0 <= v_min_kmh < v_max_kmh and v_step_kmh > 0");
+  // The command line's ranges, naming the arguments.
+  engine::check_given_settings(given, threads);
+  engine::check_speed_range(st.v_min * 3.6, st.v_max * 3.6, st.v_step * 3.6, {"v_min_kmh", "v_max_kmh", "v_step_kmh"});
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw InputError(dir + ": cannot create the output folder (" + ec.message() + ")");
@@ -162,9 +164,9 @@ py::dict critical_speed(const engine::Scenario& base, const std::string& method,
 }
 
 py::dict modes(const engine::Scenario& sc, double v_min_kmh, double v_max_kmh, double v_step_kmh, int count) {
-  if (!(v_min_kmh > 0 && v_max_kmh >= v_min_kmh && v_step_kmh > 0))
-    throw InputError("speed range: need 0 < v_min_kmh <= v_max_kmh and v_step_kmh > 0");
-  const int n = static_cast<int>(std::floor((v_max_kmh - v_min_kmh) / v_step_kmh + 1e-9)) + 1;
+  // The command line's range (railsim modes), naming the arguments.
+  const int n = engine::check_speed_range(v_min_kmh, v_max_kmh, v_step_kmh, {"v_min_kmh", "v_max_kmh", "v_step_kmh"});
+  if (count < 1 || count > 50) throw InputError("count: expected a whole number in [1, 50] (got " + std::to_string(count) + ")");
   std::vector<double> speeds;
   for (int i = 0; i < n; ++i) speeds.push_back((v_min_kmh + i * v_step_kmh) / 3.6);
   std::vector<std::vector<engine::Mode>> all;

@@ -3,6 +3,7 @@
 # naming the scenario file, line and key.
 import csv
 import json
+import re
 
 import numpy as np
 import pytest
@@ -125,3 +126,35 @@ def test_critical_speed_says_when_there_is_no_verdict(cli, tmp_path):
     # With enough time the verdict stands and says so.
     r = railsim.critical_speed(sc, v_min_kmh=60, v_max_kmh=180, v_step_kmh=60, duration=6.0, up_branch=False)
     assert r["undetermined"] is None
+
+
+@pytest.mark.parametrize("kwargs, names", [
+    (dict(duration=1e-3), "duration: expected a number in [0.5, 600] s"),
+    (dict(duration=-1.0), "duration: expected a number in [0.5, 600] s"),
+    (dict(v_step_kmh=1e-6), "v_step_kmh 1e-06: 80..300 km/h would take"),
+    (dict(v_max_kmh=5000.0), "v_min_kmh/v_max_kmh: need 0 < v_min_kmh < v_max_kmh <= 720 km/h"),
+    (dict(disturbance_mm=-50.0), "disturbance_mm: expected a number in [0.01, 20] mm"),
+    (dict(small_disturbance_mm=0.0), "small_disturbance_mm: expected a number in [0.001, 20] mm"),
+    (dict(threshold_mm=-1.0), "threshold_mm: expected a number in [0.001, 20] mm"),
+    (dict(deceleration=50.0), "deceleration: expected a number in [0.001, 10] m/s^2"),
+    (dict(threads=-3), "threads: expected a whole number in [0, 256]"),
+])
+def test_critical_speed_refuses_what_the_program_refuses(kwargs, names):
+    # The command line's ranges, naming the Python argument (before: a 1 ms duration gave no critical speed and
+    # no reason, which read as stable; a 1e-6 km/h step grew without bound; a negative duration raised
+    # "vector::reserve").
+    sc = railsim.load_scenario(SINGLE)
+    with pytest.raises(railsim.InputError, match=re.escape(names)):
+        railsim.critical_speed(sc, **kwargs)
+
+
+@pytest.mark.parametrize("args, count, names", [
+    ((50.0, 200.0, 1e-9), 6, "v_step_kmh 1e-09: 50..200 km/h would take"),
+    ((50.0, 800.0, 10.0), 6, "need 0 < v_min_kmh < v_max_kmh <= 720 km/h"),
+    ((50.0, 100.0, 10.0), 0, "count: expected a whole number in [1, 50]"),
+])
+def test_modes_refuses_what_the_program_refuses(args, count, names):
+    # Before: a 1e-9 km/h step overflowed the speed count (empty arrays, no error), 1e-6 grew past 1.4 GB.
+    sc = railsim.load_scenario(SINGLE)
+    with pytest.raises(railsim.InputError, match=re.escape(names)):
+        railsim.modes(sc, *args, count=count)
