@@ -38,13 +38,23 @@ ContactCase read_case(const config::InputNode& n, const contact::Material& mater
   const bool axes = n.has("a") || n.has("b");
   if (curv && axes) n.fail("give either the curvatures A, B [1/m] or the semi-axes a, b [m], not both");
   if (!curv && !axes) n.fail("missing the contact shape: give A, B [1/m] or a, b [m]");
-  const double Fz = n.positive("Fz");
+  // A normal load up to 10 MN (a wheel carries 50-150 kN); semi-axes from 1 um to 1 m.
+  const double Fz = n.in_range("Fz", 0.0, 1e7, true);
   try {
     c.input.patch = curv ? contact::hertz_from_load(n.positive("A"), n.positive("B"), Fz, material)
-                         : contact::hertz_from_semi_axes(n.positive("a"), n.positive("b"), Fz, material);
+                         : contact::hertz_from_semi_axes(n.in_range("a", 1e-6, 1.0), n.in_range("b", 1e-6, 1.0), Fz,
+                                                         material);
   } catch (const InputError& e) {
     if (std::string(e.what()).find(n.file()) == 0) throw;  // already located
     n.fail(e.what());
+  }
+  if (curv && !(c.input.patch.a >= 1e-6 && c.input.patch.a <= 1.0 && c.input.patch.b >= 1e-6 && c.input.patch.b <= 1.0)) {
+    char buf[240];
+    std::snprintf(buf, sizeof buf,
+                  "the Hertz patch of these curvatures at Fz = %g N has semi-axes a = %.4g m, b = %.4g m, outside "
+                  "[1e-06, 1] m",
+                  Fz, c.input.patch.a, c.input.patch.b);
+    n.at("Fz").fail(buf);
   }
   // Wheel-rail patches lie within a/b 0.05-20; past [0.01, 100] the solvers'
   // grids (elements across the minor axis) grow with the ratio into minutes and gigabytes.
@@ -58,7 +68,7 @@ ContactCase read_case(const config::InputNode& n, const contact::Material& mater
   c.input.creep = {n.number("xi"), n.number("eta"), n.number("phi")};
   c.input.material = material;
   c.input.reduction = k;
-  if (n.has("V")) c.input.rolling_speed = n.non_negative("V");
+  if (n.has("V")) c.input.rolling_speed = n.in_range("V", 0.0, 200.0);  // [m/s], as a scenario's speed
   return c;
 }
 
@@ -70,7 +80,7 @@ ContactCaseSet read_contact_cases(const config::InputNode& root) {
   set.file = root.file();
   const auto m = root.at("material");
   m.allow_only({"E", "nu", "mu"});
-  set.material.E = m.positive("E");
+  set.material.E = m.in_range("E", 1e9, 1e13);  // [Pa], as wheelset-contact (steel 2.1e11)
   set.material.nu = m.in_range("nu", 0.0, 0.5, true, false);
   // mu > 2 is beyond any dry contact of metals; above 1 it is legal but implausible for wheel on rail.
   set.material.mu = m.in_range("mu", 0.0, 2.0, true);

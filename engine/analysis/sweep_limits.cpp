@@ -11,10 +11,14 @@ namespace railsim::engine {
 
 int check_speed_range(double v_min_kmh, double v_max_kmh, double v_step_kmh, const SpeedRangeNames& names) {
   using config::format_number;
+  const auto bare = [](const char* name) {  // "--v-min" -> "v-min" inside the inequality
+    while (*name == '-') ++name;
+    return std::string(name);
+  };
   if (!std::isfinite(v_min_kmh) || !std::isfinite(v_max_kmh) ||
       !(v_min_kmh > 0 && v_max_kmh > v_min_kmh && v_max_kmh <= kMaxSweepSpeedKmh))
-    throw InputError(std::string(names.v_min) + "/" + names.v_max + ": need 0 < " + names.v_min + " < " + names.v_max +
-                     " <= " + format_number(kMaxSweepSpeedKmh) +
+    throw InputError(std::string(names.v_min) + "/" + names.v_max + ": need 0 < " + bare(names.v_min) + " < " +
+                     bare(names.v_max) + " <= " + format_number(kMaxSweepSpeedKmh) +
                      " km/h (got " + format_number(v_min_kmh) + ", " + format_number(v_max_kmh) + ")");
   if (!std::isfinite(v_step_kmh) || !(v_step_kmh > 0))
     throw InputError(std::string(names.v_step) + ": expected a positive number [km/h] (got " +

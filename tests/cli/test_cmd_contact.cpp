@@ -114,7 +114,7 @@ TEST_CASE("railsim contact bad inputs give file:line:key messages and exit 2", "
       {"missing key", head + "  - id: c1\n    A: 1.0\n    B: 1.5\n    xi: 0\n    eta: 0\n    phi: 0\n", "--model she",
        "cases.yaml:3: key 'cases[0]': missing required key 'Fz'"},
       {"negative load", head + "  - id: c1\n    A: 1.0\n    B: 1.5\n    Fz: -3\n    xi: 0\n    eta: 0\n    phi: 0\n",
-       "--model she", "cases.yaml:6: key 'cases[0].Fz': expected a positive number (got -3)"},
+       "--model she", "cases.yaml:6: key 'cases[0].Fz': expected a number in (0, 10000000] (got -3)"},
       {"nu above 0.5", "material:\n  E: 2.1e11\n  nu: 0.7\n  mu: 0.3\ncases: []\n", "--model she",
        "cases.yaml:3: key 'material.nu': expected a number in (0, 0.5] (got 0.7)"},
       {"nu zero", "material:\n  E: 2.1e11\n  nu: 0\n  mu: 0.3\ncases: []\n", "--model she",
