@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
 
+#include "config/yaml_input.hpp"
 #include "core/errors.hpp"
 #include "engine/analysis/run_history.hpp"
 #include "engine/analysis/run_safety.hpp"
@@ -64,7 +65,7 @@ results::Json wheel_json(const YqWheelResult& w) {
 
 // The run's summary.json (written by `railsim run`): a run that failed
 // numerically has no verdict; one of another scenario is compared with a warning.
-void read_run_status(const std::string& file, const Scenario& sc, YqRun& run) {
+void read_run_status(const std::string& file, const Scenario& sc, YqRun& run, double& duration, double& interval) {
   if (!std::filesystem::exists(file))
     throw InputError(file + ": not found: `railsim run` writes it whatever the run's end (ok, derailed, failed), "
                      "so the run did not finish (killed?) and its Y/Q has no verdict; run it again");
@@ -72,6 +73,8 @@ void read_run_status(const std::string& file, const Scenario& sc, YqRun& run) {
   nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
   if (j.is_discarded() || !j.is_object()) throw InputError(file + ": not a JSON object (a run's summary.json)");
   if (j.contains("status") && j["status"].is_string()) run.status = j["status"].get<std::string>();
+  duration = j.contains("duration") && j["duration"].is_number() ? j["duration"].get<double>() : NAN;
+  interval = j.contains("output_interval") && j["output_interval"].is_number() ? j["output_interval"].get<double>() : NAN;
   if (run.status == "failed") {
     const std::string why = j.contains("error") && j["error"].is_string() ? j["error"].get<std::string>() : "";
     throw InputError(file + ": status 'failed': the run stopped on a numerical failure" +
@@ -124,7 +127,8 @@ YqComparison compare_yq(const Scenario& sc, const std::vector<std::string>& dirs
     const std::string file = dirs[r] + "/channels.csv";
     if (!std::filesystem::exists(file))
       throw InputError(file + ": not found (give folders written by `railsim run SCENARIO --out DIR`)");
-    read_run_status(dirs[r] + "/summary.json", sc, run);
+    double duration = NAN, interval = NAN;
+    read_run_status(dirs[r] + "/summary.json", sc, run, duration, interval);
     const results::CsvTable t = results::read_csv(file);
     const std::string cols[4] = {"time", "distance", c.wheelset + ".L.YQ", c.wheelset + ".R.YQ"};
     for (const std::string& col : cols) t.column(col);  // throws naming the file and the column
@@ -142,6 +146,17 @@ YqComparison compare_yq(const Scenario& sc, const std::vector<std::string>& dirs
       run.yq[1].push_back(finite(i, cols[3]));
     }
     if (run.time.size() < 2) throw InputError(file + ": fewer than two samples");
+    for (std::size_t i = 1; i < run.time.size(); ++i)
+      if (!(run.time[i] > run.time[i - 1]))
+        throw InputError(file + ": line " + std::to_string(i + 2) + ": time " + config::format_number(run.time[i]) +
+                         " s does not follow " + config::format_number(run.time[i - 1]) +
+                         " s (a run's channels are in increasing time)");
+    // A run that ended normally wrote samples up to its duration: fewer is a truncated file.
+    if (run.status == "ok" && std::isfinite(duration) && std::isfinite(interval) &&
+        run.time.back() < duration - interval * 1.001)
+      throw InputError(file + ": ends at t = " + config::format_number(run.time.back()) + " s, but its run lasted " +
+                       config::format_number(duration) + " s (summary.json: status ok, output every " +
+                       config::format_number(interval) + " s): the file is truncated; its Y/Q has no verdict");
     for (int s = 0; s < 2; ++s) run.wheel[s] = evaluate(run.time, run.distance, run.yq[s], c.nadal);
     c.runs.push_back(std::move(run));
   }

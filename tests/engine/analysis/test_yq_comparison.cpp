@@ -124,4 +124,19 @@ TEST_CASE("Y/Q comparison refuses non-finite channels and failed runs, and warns
   write_run(dir + "/junk", 1.0);
   std::ofstream(dir + "/junk/summary.json") << "{not json";
   CHECK_THROWS_WITH(compare_yq(sc, {dir + "/junk"}, {}), Catch::Contains("junk/summary.json: not a JSON object"));
+  // A truncated channels.csv of a run that ended normally (10 s, 0.01 s output): refused, not a pass with
+  // a peak of 0 (4 rows of a finished run gave "Nadal not exceeded").
+  write_run(dir + "/cut", 2.0);
+  std::ofstream(dir + "/cut/summary.json") << R"({"status": "ok", "duration": 10, "output_interval": 0.01})";
+  CHECK_NOTHROW(compare_yq(sc, {dir + "/cut"}, {}));  // whole: up to t = 10 s
+  std::ofstream(dir + "/cut/channels.csv") << "time,distance,speed,ws1.L.YQ,ws1.R.YQ\n0,0,10,0,0\n0.01,0.1,10,0,0\n"
+                                              "0.02,0.2,10,0,0\n";
+  CHECK_THROWS_WITH(compare_yq(sc, {dir + "/cut"}, {}),
+                    Catch::Contains("cut/channels.csv: ends at t = 0.02 s, but its run lasted 10 s") &&
+                        Catch::Contains("truncated"));
+  // Samples out of time order: named by line.
+  std::ofstream(dir + "/cut/channels.csv") << "time,distance,speed,ws1.L.YQ,ws1.R.YQ\n0,0,10,0,0\n0.02,0.2,10,0,0\n"
+                                              "0.01,0.1,10,0,0\n";
+  CHECK_THROWS_WITH(compare_yq(sc, {dir + "/cut"}, {}),
+                    Catch::Contains("cut/channels.csv: line 4: time 0.01 s does not follow 0.02 s"));
 }
