@@ -35,6 +35,7 @@ struct ContactOptions {
 int run_contact(const ContactOptions& o) {
   const char* spin = tangential_model_option("--model", o.model).spin;
   // Inputs first: a cached-table model may take a while to build on first use.
+  check_out_is_not_input(o.out, o.cases);
   ContactCaseSet set = load_contact_cases(o.cases);
   if (!o.reduction.empty()) set_reduction(set, contact::parse_reduction(o.reduction, "--reduction"));
   contact::TangentialModelOptions mo;

@@ -49,6 +49,7 @@ constexpr int kMinPatchColumns = 3;  // patches per wheel written: at least 3, m
 
 int run_wheelset_contact(const WheelsetContactArgs& a) {
   namespace fs = std::filesystem;
+  check_out_is_not_input(a.out, a.cases);
   const auto root = config::InputNode::load_file(a.cases);
   root.allow_only({"wheel", "rail", "inclination", "gauge", "gauge_depth", "flange_back", "back_face",
                    "nominal_radius", "material", "speed", "strip", "positions"});

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 
 #include "core/errors.hpp"
 
@@ -106,6 +107,15 @@ const contact::TangentialModelEntry& tangential_model_option(const std::string& 
   } catch (const InputError& e) {
     throw InputError(option + ": " + e.what());
   }
+}
+
+void check_out_is_not_input(const std::string& out, const std::string& input) {
+  namespace fs = std::filesystem;
+  std::error_code e1, e2;
+  const fs::path a = fs::weakly_canonical(out, e1), b = fs::weakly_canonical(input, e2);
+  if (!e1 && !e2 && a == b)
+    throw InputError("--out: " + out + " is the input file " + input +
+                     " itself; writing the results would overwrite it: give another result file");
 }
 
 }  // namespace railsim::cli

@@ -33,6 +33,11 @@ const CLI::Validator& non_empty_value();
 // InputError "OPTION: unknown contact model 'x' (known models: ...)".
 const contact::TangentialModelEntry& tangential_model_option(const std::string& option, const std::string& name);
 
+// InputError "--out: FILE is the input file itself (...)" when the result
+// file `out` and the input file `input` are the same file (it would be
+// overwritten before or while it is read).
+void check_out_is_not_input(const std::string& out, const std::string& input);
+
 // "run, critical-speed, ..." in registration order.
 std::string subcommand_names(const CLI::App& app);
 

@@ -166,6 +166,13 @@ TEST_CASE("railsim contact on bad case files: exit 2 naming file, line, key and 
        {"contact_e_one.yaml:2: key 'material.E': expected a number in [1000000000, 10000000000000] (got 1)"}},
       {"flat curvatures", "contact " + bad("contact_flat_curvatures.yaml") + out,
        {"contact_flat_curvatures.yaml:4: key 'cases[0].Fz'", "outside [1e-06, 1] m"}},
+      {"--out the case file", "contact " + bad("contact_one_case.yaml") + " --model linear --out " +
+                                   bad("contact_one_case.yaml"),
+       {"--out: ", "contact_one_case.yaml is the input file", "itself"}},
+      {"--out the case file (wheelset-contact)",
+       "wheelset-contact " + test::data_path("contact_geometry/mbench_a22.yaml") + " --out " +
+           test::data_path("contact_geometry/mbench_a22.yaml"),
+       {"--out: ", "mbench_a22.yaml is the input file", "itself"}},
       // The allowed maximum grid of MIM on a 6 x 4 mm patch: about 29 GB, refused before allocating.
       {"mim --grid 4000", "contact " + bad("contact_one_case.yaml") + " --model mim --grid 4000 --no-timing --out '" +
                               dir + "/m.csv'",
