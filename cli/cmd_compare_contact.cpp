@@ -326,8 +326,8 @@ int run_compare_contact(const CompareArgs& a) {
     std::printf("%-18s %10.2f %10.2f %10.1f %12.3g %7s %8d %8s\n", models[m].name.c_str(), 100.0 * s.max_F,
                 100.0 * s.mean_F(), 100.0 * s.max_Mz, s.mean_cost_us(), front[m] ? "yes" : "", s.invalid, share);
   }
-  std::printf("\nresults in %s (comparison.csv, summary.json, speed_vs_accuracy.png, failure_map.png)\n\n",
-              a.out.c_str());
+  std::printf("\nresults in %s (comparison.csv, summary.json, speed_vs_accuracy.png%s)\n\n", a.out.c_str(),
+              r.has_map ? ", failure_map.csv, failure_map.png" : "");
   return kExitSuccess;
 }
 
