@@ -429,6 +429,14 @@ void read_start_state(const InputNode& root, Scenario& sc) {
                          config::format_number(v) + ")");
     sc.x0[idx] += v;
   }
+  // Deviations within their ranges can still put the start outside what the
+  // model covers (the lateral model's wheel unloaded by a large shift): the
+  // user's input, so bad input here, not a numerical failure at t = 0.
+  Data data(m);
+  Eigen::VectorXd xdot(m.n_states);
+  if (!rhs(m, data, 0.0, sc.x0.data(), xdot.data()) && data.left_range)
+    init->fail("these deviations put the start state outside the model's range (" + data.failure +
+               "); give smaller ones");
 }
 
 }  // namespace

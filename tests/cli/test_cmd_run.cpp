@@ -327,3 +327,21 @@ TEST_CASE("railsim run: a rerun that fails leaves none of the previous run's fil
   for (const char* f : {"yq.png", "yq.png.json", "sum_y_rms.png"})
     CHECK_FALSE(std::filesystem::exists(out + "/" + std::string(f)));
 }
+
+TEST_CASE("railsim run: initial deviations that unload a wheel of the lateral model are bad input, not a failure",
+          "[cli][run][robustness]") {
+  // 30 mm lateral shift is within the key's range (the geometry's 50 mm) but unloads the left wheel of the
+  // lateral model at t = 0: before, exit 3 "numerical failure" and summary.json status failed.
+  const std::string out = test::temp_dir("run_initial_range");
+  const auto r = test::run_railsim("run " + test::source_path("scenarios/single_wheelset.yaml") + " --out " + out +
+                                   " --set duration=0.5 --set 'initial[ws1.lateral]=0.03'");
+  INFO(r.output);
+  CHECK(r.exit_code == 2);
+  CHECK(r.output.find("key 'initial': these deviations put the start state outside the model's range") !=
+        std::string::npos);
+  CHECK(r.output.find("loss of contact") != std::string::npos);
+  // 10 mm starts and runs.
+  const auto ok = test::run_railsim("run " + test::source_path("scenarios/single_wheelset.yaml") + " --out " + out +
+                                    " --set duration=0.5 --set 'initial[ws1.lateral]=0.01'");
+  CHECK(ok.exit_code == 0);
+}
