@@ -72,7 +72,14 @@ InputNode InputNode::load_file(const std::string& path) {
 
 InputNode InputNode::load_string(const std::string& text, const std::string& name) {
   try {
-    YAML::Node root = YAML::Load(text);
+    // One document per file: a second one ("---" then more) would be ignored silently.
+    const std::vector<YAML::Node> docs = YAML::LoadAll(text);
+    if (docs.size() > 1) {
+      const int l = docs[1].Mark().line;
+      throw InputError(name + ":" + std::to_string(l >= 0 ? l + 1 : 1) + ": a second YAML document ('---'): a " +
+                       "railsim input file holds one; remove it or merge its keys into the first");
+    }
+    YAML::Node root = docs.empty() ? YAML::Node() : docs[0];
     if (!root.IsDefined() || root.IsNull())
       throw InputError(name + ":1: the file is empty (expected a YAML mapping)");
     refuse_duplicate_keys(root, name);

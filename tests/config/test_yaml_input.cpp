@@ -50,6 +50,14 @@ TEST_CASE("YAML syntax errors carry the line", "[config]") {
   CHECK(msg.find("YAML syntax error") != std::string::npos);
 }
 
+TEST_CASE("a second YAML document is an error naming its line, not ignored", "[config]") {
+  const std::string msg = error_of([] { InputNode::load_string("a: 1\nb: 2\n---\nc: 3\n", "two.yaml"); });
+  CHECK(msg.rfind("two.yaml:4: a second YAML document", 0) == 0);
+  // One document, with or without its markers, is fine.
+  CHECK(InputNode::load_string("---\na: 1\n...\n", "one.yaml").number("a") == 1.0);
+  CHECK(InputNode::load_string("a: 1\n", "one.yaml").number("a") == 1.0);
+}
+
 TEST_CASE("missing file is an input error", "[config]") {
   CHECK(error_of([] { InputNode::load_file("/nonexistent/file.yaml"); }).find("cannot open") != std::string::npos);
 }
