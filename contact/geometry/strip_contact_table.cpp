@@ -271,23 +271,21 @@ StripContactTable StripContactTable::build(const WheelRailGeometry& g, const Str
 }
 
 void StripContactTable::unpack(const std::vector<Entry>& entries) {
-  gaps_.resize(entries.size());
-  values_.resize(entries.size());
-  for (std::size_t n = 0; n < entries.size(); ++n) {
-    const Entry& e = entries[n];
-    gaps_[n] = {e.gap, e.dgap};
-    values_[n] = {{e.angle, e.lateral, e.lead, e.height, e.A, e.f}, {e.dangle, e.dlateral, e.dlead, e.dheight, e.dA, e.df}};
+  static_assert(sizeof(Entry) == kColumns * sizeof(double), "Entry is kColumns doubles");
+  entries_ = entries.size();
+  cols_.resize(entries_ * kColumns);
+  for (std::size_t n = 0; n < entries_; ++n) {
+    const double* e = &entries[n].gap;
+    for (int c = 0; c < kColumns; ++c) cols_[std::size_t(c) * entries_ + n] = e[c];
   }
   index_near_ranges();
 }
 
 std::vector<StripContactTable::Entry> StripContactTable::pack() const {
-  std::vector<Entry> entries(gaps_.size());
-  for (std::size_t n = 0; n < entries.size(); ++n) {
-    const GapEntry& g = gaps_[n];
-    const Entry6& e = values_[n];
-    entries[n] = {g.gap,      g.dgap,      e.v[kAngle],  e.d[kAngle],  e.v[kLateral], e.d[kLateral], e.v[kLead],
-                  e.d[kLead], e.v[kHeight], e.d[kHeight], e.v[kA],      e.d[kA],       e.v[kF],       e.d[kF]};
+  std::vector<Entry> entries(entries_);
+  for (std::size_t n = 0; n < entries_; ++n) {
+    double* e = &entries[n].gap;
+    for (int c = 0; c < kColumns; ++c) e[c] = cols_[std::size_t(c) * entries_ + n];
   }
   return entries;
 }
@@ -299,7 +297,7 @@ void StripContactTable::index_near_ranges() {
     for (int L = 0; L < kNearLevels; ++L) {
       NearRange& nr = near_[r * kNearLevels + std::size_t(L)];
       for (int j = row.j0; j <= row.j1; ++j)
-        if (gaps_[row.offset + std::size_t(j - row.j0)].gap <= kNearGap[L]) {
+        if (column(2 * kGap)[row.offset + std::size_t(j - row.j0)] <= kNearGap[L]) {
           if (nr.j1 < nr.j0) nr.j0 = j;
           nr.j1 = j;
         }
@@ -357,6 +355,12 @@ void StripContactTable::pose(double y, double psi, StripPose& out) const {
   out.dheight_dy = dz0;
 }
 
+// On x86-64 a second copy for processors with AVX2 (chosen at load time, GCC's
+// target_clones): the column loops run four strips per instruction; no FMA,
+// so both copies round alike and give the same results.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+__attribute__((target_clones("avx2", "default")))
+#endif
 void StripContactTable::strips(double y, double psi, double cutoff, StripSet& out) const {
   int i, k;
   double t, w, apsi;
@@ -408,49 +412,71 @@ void StripContactTable::strips(double y, double psi, double cutoff, StripSet& ou
   auto at = [&](int kk, int ii) { return row(kk, ii).offset + std::size_t(j0 - row(kk, ii).j0); };
   const std::size_t ia0 = at(k, i), ib0 = at(k, i + 1);
   const std::size_t ia1 = two ? at(k + 1, i) : ia0, ib1 = two ? at(k + 1, i + 1) : ib0;
-  // Pass 1: gaps; pass 2 fills the strips near the loaded runs.
-  const GapEntry *ga0 = gaps_.data() + ia0, *gb0 = gaps_.data() + ib0;
-  const GapEntry *ga1 = gaps_.data() + ia1, *gb1 = gaps_.data() + ib1;
+  // Pass 1: gaps; pass 2 interpolates the other quantities over the run
+  // [qa, qb] from the first to the last strip near a loaded one, one
+  // quantity at a time (columns: vectorised over the strips), and fills the
+  // near strips. Each value is the same expression as a scalar evaluation:
+  // Hermite in y at yaw nodes k and k + 1, then linear between them.
   double vgap[StripSet::kMax];
-  for (int q = 0; q < m; ++q) {
-    double v = h00 * ga0[q].gap + h10 * ga0[q].dgap + h01 * gb0[q].gap + h11 * gb0[q].dgap;
-    if (two) v += w * (h00 * ga1[q].gap + h10 * ga1[q].dgap + h01 * gb1[q].gap + h11 * gb1[q].dgap - v);
-    vgap[q] = std::max(0.0, v);
+  auto hermite = [&](int q, std::size_t oa, std::size_t ob, int n0, int n1, double* dst) {
+    const double *av = column(2 * q) + oa, *ad = column(2 * q + 1) + oa;
+    const double *bv = column(2 * q) + ob, *bd = column(2 * q + 1) + ob;
+    for (int n = n0; n <= n1; ++n) dst[n] = h00 * av[n] + h10 * ad[n] + h01 * bv[n] + h11 * bd[n];
+  };
+  {
+    double v1[StripSet::kMax];
+    hermite(kGap, ia0, ib0, 0, m - 1, vgap);
+    if (two) {
+      hermite(kGap, ia1, ib1, 0, m - 1, v1);
+      for (int q = 0; q < m; ++q) vgap[q] += w * (v1[q] - vgap[q]);
+    }
+    for (int q = 0; q < m; ++q) vgap[q] = std::max(0.0, vgap[q]);
   }
+  int qa = m, qb = -1;
+  for (int q = 0; q < m; ++q)
+    if (vgap[q] <= cutoff) {
+      qa = std::min(qa, std::max(0, q - 1));
+      qb = std::min(m - 1, q + 1);
+    }
+  if (qb < qa) return;
   // lead / psi at the nodes (node 0 takes node 1's); at psi = 0 the lead is 0.
   const double inv_p0 = k > 0 ? 1.0 / p0 : 0.0, inv_p1 = nk_ > 1 ? 1.0 / p1 : 0.0;
-  const Entry6 *a0 = values_.data() + ia0, *b0 = values_.data() + ib0;
-  const Entry6 *a1 = values_.data() + ia1, *b1 = values_.data() + ib1;
-  for (int q = 0; q < m; ++q) {
+  constexpr int kQuantities = 6;  // angle, lateral, lead, height, A, f
+  double val[kQuantities][StripSet::kMax], v1[StripSet::kMax];
+  for (int l = 0; l < kQuantities; ++l) {
+    double* v0 = val[l];
+    const int quantity = kAngle + l;
+    hermite(quantity, ia0, ib0, qa, qb, v0);
+    if (!two) {
+      if (quantity == kLead)
+        for (int q = qa; q <= qb; ++q) v0[q] = sign * apsi * v0[q] * inv_p0;  // at a node; 0 at psi = 0 (k = 0)
+      continue;
+    }
+    hermite(quantity, ia1, ib1, qa, qb, v1);
+    if (quantity != kLead) {
+      for (int q = qa; q <= qb; ++q) v0[q] += w * (v1[q] - v0[q]);
+    } else {
+      for (int q = qa; q <= qb; ++q) {
+        const double g1 = v1[q] * inv_p1;
+        const double g0 = k > 0 ? v0[q] * inv_p0 : g1;
+        v0[q] = sign * apsi * (g0 + w * (g1 - g0));
+      }
+    }
+  }
+  for (int q = qa; q <= qb; ++q) {
     const bool near = vgap[q] <= cutoff || (q > 0 && vgap[q - 1] <= cutoff) || (q + 1 < m && vgap[q + 1] <= cutoff);
     if (!near || out.n == StripSet::kMax) continue;
     const int j = j0 + q;
-    // The six quantities at node k (v0) and k + 1 (v1), as one vector each.
-    double v0[6], v1[6];
-    const Entry6& ea = a0[q];
-    const Entry6& eb = b0[q];
-    for (int l = 0; l < 6; ++l) v0[l] = h00 * ea.v[l] + h10 * ea.d[l] + h01 * eb.v[l] + h11 * eb.d[l];
     StripPoint& sp = out.s[out.n++];
     sp.index = j;
     sp.gap = vgap[q];
     sp.y_wheel = y_wheel_[std::size_t(j)];
-    if (two) {
-      const Entry6& fa = a1[q];
-      const Entry6& fb = b1[q];
-      for (int l = 0; l < 6; ++l) v1[l] = h00 * fa.v[l] + h10 * fa.d[l] + h01 * fb.v[l] + h11 * fb.d[l];
-      const double lead0 = v0[kLead];
-      for (int l = 0; l < 6; ++l) v0[l] += w * (v1[l] - v0[l]);  // lead: below
-      const double g1 = v1[kLead] * inv_p1;
-      const double g0 = k > 0 ? lead0 * inv_p0 : g1;
-      sp.lead = sign * apsi * (g0 + w * (g1 - g0));
-    } else {
-      sp.lead = sign * apsi * v0[kLead] * inv_p0;  // at a node; 0 at psi = 0 (k = 0)
-    }
-    sp.angle = v0[kAngle];
-    sp.lateral = v0[kLateral];
-    sp.height = v0[kHeight];
-    sp.A = v0[kA];
-    sp.f = v0[kF];
+    sp.angle = val[kAngle - 1][q];
+    sp.lateral = val[kLateral - 1][q];
+    sp.lead = val[kLead - 1][q];
+    sp.height = val[kHeight - 1][q];
+    sp.A = val[kA - 1][q];
+    sp.f = val[kF - 1][q];
   }
 }
 

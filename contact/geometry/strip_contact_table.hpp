@@ -109,7 +109,7 @@ class StripContactTable {
   int strip_count() const { return strips_total_; }
   // Wheel-profile chord parameter of strip j (WheelRailGeometry::point_at).
   double strip_parameter(int j) const { return t0_ + j * grid_.strip; }
-  std::size_t stored_entries() const { return gaps_.size(); }
+  std::size_t stored_entries() const { return entries_; }
 
   // Winkler modulus per unit E* for a relative-curvature ratio B/A (see header).
   static double winkler_factor(double B_over_A);
@@ -124,19 +124,16 @@ class StripContactTable {
 
  private:
   // One strip at one node: values and limited y-slopes, the cache file's
-  // record. In memory the gap and the other six quantities are held apart
-  // (GapEntry, Entry6: the gap pass reads only 16 bytes per strip and node; the
-  // six others are evaluated as one vector), see unpack().
+  // record. In memory the fourteen fields are held as columns (structure of
+  // arrays, `cols_`: column c of entry n at cols_[c * entries + n]), so that
+  // strips() interpolates each quantity over a run of consecutive strips as
+  // one vectorisable loop, and the gap pass reads only the two gap columns.
   struct Entry {
     double gap, dgap, angle, dangle, lateral, dlateral, lead, dlead, height, dheight, A, dA, f, df;
   };
-  struct GapEntry {
-    double gap, dgap;
-  };
-  static constexpr int kAngle = 0, kLateral = 1, kLead = 2, kHeight = 3, kA = 4, kF = 5;
-  struct alignas(16) Entry6 {
-    double v[6], d[6];  // values and y-slopes of angle, lateral, lead, height, A, f
-  };
+  static constexpr int kColumns = 14;  // in Entry's order: value, y-slope of gap, angle, lateral, lead, height, A, f
+  static constexpr int kGap = 0, kAngle = 1, kLateral = 2, kLead = 3, kHeight = 4, kA = 5, kF = 6;  // quantity q: columns 2q, 2q+1
+  const double* column(int c) const { return cols_.data() + std::size_t(c) * entries_; }
   void unpack(const std::vector<Entry>& entries);  // fills gaps_, values_ and the near ranges
   std::vector<Entry> pack() const;                 // the file's records
   struct Row {
@@ -165,8 +162,8 @@ class StripContactTable {
   double t0_ = 0.0;  // chord parameter of strip 0
   std::vector<double> y_wheel_;  // per strip
   std::vector<Row> rows_;
-  std::vector<GapEntry> gaps_;
-  std::vector<Entry6> values_;
+  std::size_t entries_ = 0;
+  std::vector<double> cols_;  // kColumns columns of entries_ values
 };
 
 }  // namespace railsim::contact
