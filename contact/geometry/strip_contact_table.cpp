@@ -441,7 +441,7 @@ void StripContactTable::strips(double y, double psi, double cutoff, StripSet& ou
   if (qb < qa) return;
   // lead / psi at the nodes (node 0 takes node 1's); at psi = 0 the lead is 0.
   const double inv_p0 = k > 0 ? 1.0 / p0 : 0.0, inv_p1 = nk_ > 1 ? 1.0 / p1 : 0.0;
-  constexpr int kQuantities = 6;  // angle, lateral, lead, height, A, f
+  constexpr int kQuantities = 6;  // angle, lateral, lead, height, A, f: val[quantity - kAngle]
   double val[kQuantities][StripSet::kMax], v1[StripSet::kMax];
   for (int l = 0; l < kQuantities; ++l) {
     double* v0 = val[l];
@@ -471,12 +471,12 @@ void StripContactTable::strips(double y, double psi, double cutoff, StripSet& ou
     sp.index = j;
     sp.gap = vgap[q];
     sp.y_wheel = y_wheel_[std::size_t(j)];
-    sp.angle = val[kAngle - 1][q];
-    sp.lateral = val[kLateral - 1][q];
-    sp.lead = val[kLead - 1][q];
-    sp.height = val[kHeight - 1][q];
-    sp.A = val[kA - 1][q];
-    sp.f = val[kF - 1][q];
+    sp.angle = val[kAngle - kAngle][q];
+    sp.lateral = val[kLateral - kAngle][q];
+    sp.lead = val[kLead - kAngle][q];
+    sp.height = val[kHeight - kAngle][q];
+    sp.A = val[kA - kAngle][q];
+    sp.f = val[kF - kAngle][q];
   }
 }
 
