@@ -3,6 +3,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cctype>
 #include <filesystem>
 
@@ -218,7 +219,47 @@ void rethrow_for_overrides(const InputError& e, const std::vector<ScenarioOverri
   throw e;
 }
 
+namespace {
+
+bool is_speed_key(const ScenarioOverride& o) {
+  return o.path.size() == 1 && (o.path[0] == "speed" || o.path[0] == "speed_kmh");
+}
+
+// Whether path `inner` lies inside (or is) path `outer`.
+bool path_within(const std::vector<std::string>& inner, const std::vector<std::string>& outer) {
+  return inner.size() >= outer.size() && std::equal(outer.begin(), outer.end(), inner.begin());
+}
+
+}  // namespace
+
+void check_overrides_agree(const std::vector<ScenarioOverride>& overrides) {
+  for (std::size_t i = 0; i < overrides.size(); ++i) {
+    for (std::size_t j = i + 1; j < overrides.size(); ++j) {
+      const ScenarioOverride& a = overrides[i];
+      const ScenarioOverride& b = overrides[j];
+      if (is_speed_key(a) && is_speed_key(b)) {
+        if (a.path == b.path && a.value == b.value) continue;
+        throw InputError(b.option + ": the speed is already set by " + a.option + " (give the speed once)");
+      }
+      if (a.path == b.path) {
+        if (a.value == b.value) continue;
+        throw InputError(b.option + ": key '" + b.key + "' is already set to a different value by " + a.option +
+                         " (give each key once)");
+      }
+      if (path_within(b.path, a.path) || path_within(a.path, b.path)) {
+        const ScenarioOverride& outer = path_within(b.path, a.path) ? a : b;
+        const ScenarioOverride& inner = &outer == &a ? b : a;
+        throw InputError(b.option + ": key '" + inner.key + "' lies inside key '" + outer.key + "' set by " +
+                         (&outer == &a ? a.option : std::string("this option")) +
+                         "; the result would depend on their order (set the inner key in the outer value, or only the "
+                         "inner key)");
+      }
+    }
+  }
+}
+
 LoadedScenario load_scenario_with_overrides(const std::string& path, const std::vector<ScenarioOverride>& overrides) {
+  check_overrides_agree(overrides);
   const config::InputNode original = config::InputNode::load_file(path);
   // The overrides edit the parsed tree in place (no YAML::Clone: a clone loses
   // the nodes' file positions, and every message would say line 1).

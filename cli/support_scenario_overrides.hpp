@@ -9,7 +9,8 @@
 // Values are YAML (numbers, strings, {flow: maps}, [lists]). Missing mappings
 // on the way are created; a path through a value (e.g. into `track` when the
 // scenario names a track file) is refused. Setting `speed` removes
-// `speed_kmh` and the reverse (a scenario gives exactly one). Relative paths,
+// `speed_kmh` and the reverse (a scenario gives exactly one; one command line
+// giving it twice is refused). Relative paths,
 // in the file or in a value, resolve from the scenario's own folder as always.
 // Every error about an overridden key (unknown key, value out of range,
 // malformed option) is an InputError that starts with the option, e.g.
@@ -41,7 +42,14 @@ struct LoadedScenario {
   config::InputNode root;  // the YAML tree after the overrides
 };
 
-// Read `path`, apply the overrides in order, load the scenario (engine/io/scenario.hpp).
+// Refuse overrides that contradict each other (InputError naming both options):
+// the speed given twice (speed, speed_kmh, --speed-kmh) unless identical, one
+// key given two different values, or a key inside another key's value
+// (contact.material.mu and contact.material={...}), whose result would depend
+// on the order of the options. A key repeated with the same value is accepted.
+void check_overrides_agree(const std::vector<ScenarioOverride>& overrides);
+
+// Read `path`, check the overrides agree, apply them in order, load the scenario (engine/io/scenario.hpp).
 LoadedScenario load_scenario_with_overrides(const std::string& path, const std::vector<ScenarioOverride>& overrides);
 
 // Rethrow an InputError about an overridden key with the option in front (otherwise unchanged).

@@ -230,6 +230,15 @@ TEST_CASE("railsim run: --set and --speed-kmh errors exit 2 naming the option", 
       {"--set running_safety.vehicle_category=tram", "--set running_safety.vehicle_category=tram: "},
       {"--set 'duration=[1, 2'", "not valid YAML"},
       {"--speed-kmh -5", "--speed-kmh"},
+      // Overrides that contradict each other are refused, naming both options.
+      {"--set speed=20 --speed-kmh 90", "--speed-kmh 90: the speed is already set by --set speed=20"},
+      {"--set speed_kmh=80 --set speed_kmh=90", "--set speed_kmh=90: the speed is already set by --set speed_kmh=80"},
+      {"--set contact.material.mu=0.2 --set contact.material.mu=0.3",
+       "key 'contact.material.mu' is already set to a different value by --set contact.material.mu=0.2"},
+      {"--set 'contact.material={mu: 0.2}' --set contact.material.mu=0.3",
+       "key 'contact.material.mu' lies inside key 'contact.material' set by --set contact.material={mu: 0.2}"},
+      {"--set contact.material.mu=0.3 --set 'contact.material={mu: 0.2}'",
+       "key 'contact.material.mu' lies inside key 'contact.material' set by this option"},
   };
   for (const auto& c : cases) {
     const auto r = test::run_railsim("run " + s + " " + c.args + " --out " + out);
@@ -254,6 +263,12 @@ TEST_CASE("railsim run: --set on inline tracks and speed, variants without copie
   const json js = test::read_json(out + "/summary.json");
   CHECK(number(js, "speed_initial") == 20.0);
   CHECK(js["overrides"][0] == "--set speed=20");  // the overrides are recorded
+  // A key repeated with the same value is no contradiction.
+  const auto same = test::run_railsim("run " + test::source_path("scenarios/manchester_coach.yaml") +
+                                      " --set speed=20 --set speed=20 --set duration=0.2 --set duration=0.2 --out " +
+                                      out + "/same");
+  INFO(same.output);
+  CHECK(same.exit_code == 0);
   CHECK(number(js["running_safety"]["zones"][0], "end") == 300.0);  // the straight section of the zones
 }
 
