@@ -1,4 +1,5 @@
-// `railsim wheelset-contact CASES.yaml --model NAME --out forces.csv`: the
+// `railsim wheelset-contact CASES.yaml --model NAME --out forces.csv [--grid N]
+// [--tolerance T] [--extrapolation none|richardson]`: the
 // contact of a whole wheelset at given poses (engine/analysis/
 // wheelset_contact_cases.hpp), one row per position: the total force of each
 // wheel on its rail in railsim's track frame and, per contact patch, its
@@ -28,6 +29,7 @@
 #include "config/yaml_input.hpp"
 #include "contact/geometry/profile.hpp"
 #include "contact/geometry/wheel_rail_geometry.hpp"
+#include "contact/registry.hpp"
 #include "core/errors.hpp"
 #include "engine/analysis/wheelset_contact_cases.hpp"
 #include "engine/io/scenario.hpp"
@@ -43,6 +45,7 @@ struct WheelsetContactArgs {
   std::string out = "wheelset_contact.csv";
   int grid = 0;
   double tolerance = 0.0;
+  std::string extrapolation;
 };
 
 constexpr int kMinPatchColumns = 3;  // patches per wheel written: at least 3, more when a wheel has more
@@ -82,6 +85,8 @@ int run_wheelset_contact(const WheelsetContactArgs& a) {
   s.model = a.model;
   s.model_options.grid = a.grid;
   s.model_options.tolerance = a.tolerance;
+  if (!a.extrapolation.empty())
+    s.model_options.extrapolation = contact::grid_extrapolation_from_name(a.extrapolation, "--extrapolation");
   std::vector<engine::WheelsetContactPosition> pos;
   for (const auto& n : root.at("positions").elements()) {
     n.allow_only({"y", "yaw", "Fz", "roll", "omega"});
@@ -149,6 +154,10 @@ void register_wheelset_contact(CLI::App& app, CommandRunner& run) {
   cmd->add_option("--grid", a->grid, "Elements across the minor axis (mim; 0 = model default)")
       ->check(CLI::Range(0, 400));
   cmd->add_option("--tolerance", a->tolerance, "Solver tolerance (mim; 0 = model default)")->check(number_range(0.0, 0.1));
+  cmd->add_option("--extrapolation", a->extrapolation,
+                  "Grid extrapolation of model mim: richardson (default; from grid N and N/2) or none (the grid's "
+                  "own forces, CONTACT's discretisation)")
+      ->check(CLI::IsMember({"none", "richardson"}));
   cmd->callback([a, &run] { run = [a] { return run_wheelset_contact(*a); }; });
 }
 

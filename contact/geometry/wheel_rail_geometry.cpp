@@ -346,22 +346,32 @@ void WheelRailGeometry::check_pose(double y, double yaw) const {
 }
 
 namespace {
-void check_points(const WheelContact& wc, Side side, double y, double wheel_lo, double wheel_hi, double tip,
-                  double margin) {
+// The pose as the messages name it: "wheelset lateral shift y = 0.012 m", with
+// the yaw when it is not zero and the roll when the caller gave it.
+std::string pose_text(double y, double yaw, const double* given_roll = nullptr) {
+  std::string t = "wheelset lateral shift y = " + num(y) + " m";
+  if (yaw != 0.0) t += ", yaw = " + num(yaw) + " rad";
+  if (given_roll) t += ", roll = " + num(*given_roll) + " rad (given)";
+  return t;
+}
+
+// The points of one wheel checked for range; the message (built only on
+// failure) names the pose, with the roll when the caller gave it.
+void check_points(const WheelContact& wc, Side side, double y, double yaw, const double* given_roll, double wheel_lo,
+                  double wheel_hi, double tip, double margin) {
+  const auto pose = [&] { return pose_text(y, yaw, given_roll); };
   if (wc.n == 0)
-    throw InputError(std::string("wheelset lateral shift y = ") + num(y) + " m: the " + side_name(side) +
-                     " wheel does not meet its rail (out of range)");
+    throw InputError(pose() + ": the " + side_name(side) + " wheel does not meet its rail (out of range)");
   constexpr double kMargin = 1e-3;
   for (int i = 0; i < wc.n; ++i) {
     const auto& p = wc.p[static_cast<std::size_t>(i)];
     if (p.y_wheel < wheel_lo + kMargin || p.y_wheel > wheel_hi - kMargin)
-      throw InputError(std::string("wheelset lateral shift y = ") + num(y) + " m is out of range: the " +
-                       side_name(side) + " wheel touches within 1 mm of the end of its profile (y_wheel = " +
-                       num(p.y_wheel * 1e3) + " mm); flange climbing or wheel off the rail");
+      throw InputError(pose() + " is out of range: the " + side_name(side) +
+                       " wheel touches within 1 mm of the end of its profile (y_wheel = " + num(p.y_wheel * 1e3) +
+                       " mm); flange climbing or wheel off the rail");
     if (i == 0 && std::abs(p.y_wheel - tip) < margin)
-      throw InputError(std::string("wheelset lateral shift y = ") + num(y) + " m is out of range: the " +
-                       side_name(side) + " wheel rides on its flange tip (contact " + num(std::abs(p.y_wheel - tip) * 1e3) +
-                       " mm from the tip): flange climbing");
+      throw InputError(pose() + " is out of range: the " + side_name(side) + " wheel rides on its flange tip (contact " +
+                       num(std::abs(p.y_wheel - tip) * 1e3) + " mm from the tip): flange climbing");
   }
 }
 }  // namespace
@@ -386,7 +396,8 @@ WheelsetContact WheelRailGeometry::solve(double y, double yaw) const {
   ws.z = {z, z};
   for (Side s : {Side::left, Side::right}) {
     ws.wheel[static_cast<std::size_t>(s)] = wheel_contacts(s, y, z, roll, yaw);
-    check_points(ws.wheel[static_cast<std::size_t>(s)], s, y, wheel_.y().front(), wheel_.y().back(), tip_, options_.flange_margin);
+    check_points(ws.wheel[static_cast<std::size_t>(s)], s, y, yaw, nullptr, wheel_.y().front(), wheel_.y().back(),
+                 tip_, options_.flange_margin);
   }
   return ws;
 }
@@ -403,11 +414,12 @@ WheelsetContact WheelRailGeometry::at_roll(double y, double yaw, double roll) co
     const auto i = static_cast<std::size_t>(s);
     const double g = min_gap(s, y, 0.0, roll, yaw);
     if (!std::isfinite(g))
-      throw InputError("wheelset lateral shift y = " + num(y) + " m: the " + std::string(side_name(s)) +
+      throw InputError(pose_text(y, yaw, &roll) + ": the " + std::string(side_name(s)) +
                        " wheel does not meet its rail (out of range)");
     ws.z[i] = -g;
     ws.wheel[i] = wheel_contacts(s, y, ws.z[i], roll, yaw);
-    check_points(ws.wheel[i], s, y, wheel_.y().front(), wheel_.y().back(), tip_, options_.flange_margin);
+    check_points(ws.wheel[i], s, y, yaw, &roll, wheel_.y().front(), wheel_.y().back(), tip_,
+                 options_.flange_margin);
   }
   return ws;
 }

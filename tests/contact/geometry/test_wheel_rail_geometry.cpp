@@ -155,6 +155,10 @@ TEST_CASE("Out-of-range positions give InputError", "[geometry][search][errors]"
   CHECK_THROWS_AS(g.solve(NAN), InputError);
   // Far beyond the flangeway clearance the wheel rides on its flange tip.
   CHECK_THROWS_WITH(g.solve(0.045), Catch::Contains("flange climbing"));
+  // The message names the pose it was given: the yaw, and the roll when the caller prescribed it.
+  CHECK_THROWS_WITH(g.solve(0.045, 0.002), Catch::Contains("y = 0.045 m, yaw = 0.002 rad is out of range"));
+  CHECK_THROWS_WITH(g.at_roll(0.045, 0.002, 0.001),
+                    Catch::Contains("y = 0.045 m, yaw = 0.002 rad, roll = 0.001 rad (given) is out of range"));
   CHECK_NOTHROW(g.solve(0.012));
   TrackSetup bad;
   bad.gauge = 3.0;

@@ -254,3 +254,46 @@ TEST_CASE("wheelset-contact: every patch of a wheel is written, however many", "
     }
   CHECK(most >= 4);
 }
+
+TEST_CASE("wheelset-contact: --extrapolation none gives MIM's own grid forces, close to the extrapolated ones",
+          "[engine][analysis][contact]") {
+  // Tread positions of A-2.2 (0-4 mm), MIM at grid 30: without extrapolation
+  // the forces are the grid's own (CONTACT's discretisation), with it (the
+  // default) extrapolated from grid 30 and 15. The two differ by the grid's
+  // first-order error: not zero, and well below 2 % of mu Fz (grid 60 is
+  // within 0.49 % of grid 120 without extrapolation, contact/registry.cpp).
+  const std::string dir = test::temp_dir("wheelset_contact_extrapolation");
+  std::string text = test::read_text(test::data_path("contact_geometry/mbench_a22.yaml"));
+  const auto cut = text.find("  - {y: -0.0045");
+  REQUIRE(cut != std::string::npos);
+  text.erase(cut);
+  const std::string f = dir + "/a22_tread.yaml";
+  std::ofstream(f) << text;
+  const double muFz = 0.3 * 1.0e4;
+  auto forces = [&](const std::string& option) {
+    const auto r = test::run_railsim("wheelset-contact " + f + " --model mim --grid 30 " + option + " --out " + dir +
+                                     "/f.csv");
+    INFO(option << "\n" << r.output);
+    REQUIRE(r.exit_code == 0);
+    return results::read_csv(dir + "/f.csv");
+  };
+  const auto plain = forces("--extrapolation none");
+  const auto extrapolated = forces("--extrapolation richardson");
+  const auto fallback = forces("");
+  REQUIRE(plain.rows.size() == 9);
+  double largest = 0.0;
+  for (std::size_t i = 0; i < plain.rows.size(); ++i)
+    for (const std::string c : {"left_Fx", "left_Fy", "right_Fx", "right_Fy"}) {
+      INFO("row " << i << " " << c);
+      largest = std::max(largest, std::abs(plain.number(i, c) - extrapolated.number(i, c)) / muFz);
+      CHECK(fallback.number(i, c) == extrapolated.number(i, c));  // Richardson is the default
+    }
+  WARN("grid 30, none against richardson: largest difference " << 100 * largest << " % of mu Fz");
+  CHECK(largest > 1e-4);
+  CHECK(largest < 0.02);
+  // The option's values are checked.
+  const auto bad = test::run_railsim("wheelset-contact " + f + " --model mim --extrapolation linear --out " + dir +
+                                     "/f.csv");
+  CHECK(bad.exit_code == 2);
+  CHECK(bad.output.find("--extrapolation") != std::string::npos);
+}
