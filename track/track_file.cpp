@@ -154,6 +154,15 @@ Track load_track(const InputNode& root, const std::string& base_dir, const std::
   const std::string name = root.string_or("name", default_name);
   const double rail_spacing = root.has("rail_spacing") ? root.at("rail_spacing").as_in_range(0.5, 2.5) : 1.5;
   const double gauge = root.has("gauge") ? root.at("gauge").as_in_range(0.5, 2.0) : 1.435;
+  // The gauge (between the rails' running edges) lies inside the distance of
+  // the rail centres, by about a rail head's width (1.435 / 1.5 m standard).
+  if (!(gauge < rail_spacing)) {
+    const InputNode& at = root.has("gauge") ? root.at("gauge") : root.at("rail_spacing");
+    at.fail("gauge " + format_number(gauge) + " m is not smaller than rail_spacing " + format_number(rail_spacing) +
+            " m" + (root.has("rail_spacing") ? "" : " (the default)") +
+            ": rail_spacing is the distance of the rail centres, about the gauge plus a rail head's width "
+            "(1.5 m for the standard gauge 1.435 m); give both");
+  }
   Pose start;
   if (auto st = root.find("start")) {
     st->allow_only({"x", "y", "heading_deg"});

@@ -28,8 +28,11 @@ double equivalent_conicity(const ContactTable& table, double amplitude, int samp
   const TableGrid& g = table.grid();
   if (!(amplitude > 0.0) || -amplitude < g.y_min - 1e-12 || amplitude > g.y_max + 1e-12) {
     char buf[200];
-    std::snprintf(buf, sizeof buf, "equivalent conicity: amplitude %.6g m outside the table range [%.6g, %.6g] m",
-                  amplitude, g.y_min, g.y_max);
+    // The sweep runs over [-amplitude, amplitude]: a positive amplitude the table covers on both sides.
+    std::snprintf(buf, sizeof buf,
+                  "equivalent conicity: amplitude %.6g m: expected a value in (0, %.6g] m (positive, and the sweep "
+                  "[-amplitude, amplitude] within the table's range [%.6g, %.6g] m)",
+                  amplitude, std::min(-g.y_min, g.y_max), g.y_min, g.y_max);
     throw InputError(buf);
   }
   return equivalent_conicity(

@@ -284,6 +284,14 @@ bool is_shipped_profile_name(const std::string& name) {
 }
 
 Profile read_profile(const std::string& path_or_name, ProfileKind kind, const ProfileReadOptions& options) {
+  // 0 means "from the file"; otherwise metres per file unit, from a micrometre to a metre.
+  if (!(options.unit == 0.0 || (std::isfinite(options.unit) && options.unit >= 1e-6 && options.unit <= 1.0))) {
+    char given[32];
+    std::snprintf(given, sizeof given, "%g", options.unit);
+    fail(path_or_name, std::string("unit option = ") + given +
+                           ": expected 0 (the unit from the file) or metres per file unit in [1e-6, 1] "
+                           "(1e-3 for mm, 1 for m)");
+  }
   std::string path = path_or_name;
   const std::string lname = lower(path_or_name);
   if (lname == "s1002") path = shipped_profile_dir() + "/MBench_S1002_v3.prw";

@@ -16,7 +16,10 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <cstdint>
+#include <limits>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -56,6 +59,28 @@ Column column(const Array& a, const char* name, py::ssize_t& n) {
   return {a.data(), len, len == 1 ? 0 : 1};
 }
 
+// Every value of a column within [lo, hi] (open ends where asked), the ranges
+// of `railsim contact`'s case files (cli/support_contact_cases.cpp); an
+// InputError names the argument, the index and the admissible range.
+void check_range(const Column& c, const char* name, double lo, double hi, bool lo_open = false,
+                 bool hi_open = false, const char* unit = "") {
+  for (py::ssize_t i = 0; i < c.n; ++i) {
+    const double v = c.p[i];
+    const bool ok = std::isfinite(v) && (lo_open ? v > lo : v >= lo) && (hi_open ? v < hi : v <= hi);
+    if (ok) continue;
+    std::ostringstream m;
+    m << name;
+    if (c.n > 1) m << "[" << i << "]";
+    m << " = " << v << ": expected ";
+    if (lo == -std::numeric_limits<double>::max() && hi == std::numeric_limits<double>::max())
+      m << "a finite number";
+    else
+      m << "a value in " << (lo_open ? "(" : "[") << lo << ", " << hi << (hi_open ? ")" : "]");
+    m << unit;
+    throw InputError(m.str());
+  }
+}
+
 py::dict solve_arrays(const std::string& model_name, bool curvatures, const Array& xi, const Array& eta,
                       const Array& phi, const Array& s1, const Array& s2, const Array& fz, const Array& e,
                       const Array& nu, const Array& mu, const Array& v, const Array& k11, const Array& k22,
@@ -75,6 +100,26 @@ py::dict solve_arrays(const std::string& model_name, bool curvatures, const Arra
   const Column cf = column(fz, "Fz", n), cE = column(e, "E", n), cnu = column(nu, "nu", n), cmu = column(mu, "mu", n);
   const Column cv = column(v, "V", n), ck1 = column(k11, "k11", n), ck2 = column(k22, "k22", n),
                ck3 = column(k23, "k23", n);
+
+  constexpr double kHuge = std::numeric_limits<double>::max();
+  check_range(cx, "xi", -kHuge, kHuge);
+  check_range(ce, "eta", -kHuge, kHuge);
+  check_range(cp, "phi", -kHuge, kHuge, false, false, " 1/m");
+  if (curvatures) {
+    check_range(c1, "A", 0.0, kHuge, true, false, " 1/m");
+    check_range(c2, "B", 0.0, kHuge, true, false, " 1/m");
+  } else {
+    check_range(c1, "a", 1e-6, 1.0, false, false, " m");
+    check_range(c2, "b", 1e-6, 1.0, false, false, " m");
+  }
+  check_range(cf, "Fz", 0.0, 1e7, true, false, " N");
+  check_range(cE, "E", 1e9, 1e13, false, false, " Pa");
+  check_range(cnu, "nu", 0.0, 0.5, false, true);
+  check_range(cmu, "mu", 0.0, 2.0, true);
+  check_range(cv, "V", 0.0, 200.0, false, false, " m/s");
+  check_range(ck1, "k11", 0.0, 1.5, true);
+  check_range(ck2, "k22", 0.0, 1.5, true);
+  check_range(ck3, "k23", 0.0, 1.5, true);
 
   // One patch for all points: a, b, p0 come back as numbers, else as arrays.
   const bool fixed_patch = c1.n == 1 && c2.n == 1 && cf.n == 1 && cE.n == 1 && cnu.n == 1;
@@ -171,6 +216,21 @@ py::dict mim_fields(double s1, double s2, bool curvatures, double Fz, double xi,
   if (grid > 0) o.grid = grid;
   if (tolerance > 0) o.tolerance = tolerance;
   o.check();
+  const auto one = [](const double& v) { return Column{&v, 1, 0}; };
+  constexpr double kHuge = std::numeric_limits<double>::max();
+  for (const auto& [v, name] : {std::pair{xi, "xi"}, std::pair{eta, "eta"}, std::pair{phi, "phi"}})
+    check_range(one(v), name, -kHuge, kHuge);
+  if (curvatures) {
+    check_range(one(s1), "A", 0.0, kHuge, true, false, " 1/m");
+    check_range(one(s2), "B", 0.0, kHuge, true, false, " 1/m");
+  } else {
+    check_range(one(s1), "a", 1e-6, 1.0, false, false, " m");
+    check_range(one(s2), "b", 1e-6, 1.0, false, false, " m");
+  }
+  check_range(one(Fz), "Fz", 0.0, 1e7, true, false, " N");
+  check_range(one(E), "E", 1e9, 1e13, false, false, " Pa");
+  check_range(one(nu), "nu", 0.0, 0.5, false, true);
+  check_range(one(mu), "mu", 0.0, 2.0, true);
   const contact::Material m{E, nu, mu};
   const contact::HertzPatch patch =
       curvatures ? contact::hertz_from_load(s1, s2, Fz, m) : contact::hertz_from_semi_axes(s1, s2, Fz, m);

@@ -147,7 +147,13 @@ void bind_geometry(py::module_& m) {
               bool cache, const std::string& cache_dir) {
              const contact::ContactTable t = table_of(g, y_min, y_max, y_step, cache, cache_dir);
              std::vector<double> c;
-             for (double a : amplitudes) c.push_back(contact::equivalent_conicity(t, a));
+             for (std::size_t i = 0; i < amplitudes.size(); ++i) {
+               try {
+                 c.push_back(contact::equivalent_conicity(t, amplitudes[i]));
+               } catch (const InputError& e) {
+                 throw InputError("amplitudes[" + std::to_string(i) + "]: " + e.what());
+               }
+             }
              const auto rr = contact::rolling_radius_difference(t);
              py::dict d;
              d["amplitude"] = to_array(amplitudes);

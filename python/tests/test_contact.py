@@ -145,3 +145,28 @@ def test_errors_are_python_exceptions_with_railsims_message():
     with pytest.raises(railsim.InputError):
         railsim.contact("linear", 1e-3, a=-6e-3, b=4e-3, Fz=75e3)
     assert issubclass(railsim.NumericalError, ArithmeticError)
+
+
+@pytest.mark.parametrize("arg, value, expect", [
+    ("V", -1.0, r"V = -1: expected a value in \[0, 200\] m/s"),
+    ("V", float("nan"), r"V = nan"),
+    ("mu", 0.0, r"mu = 0: expected a value in \(0, 2\]"),
+    ("nu", 0.5, r"nu = 0.5: expected a value in \[0, 0.5\)"),
+    ("E", 1e20, r"E = 1e\+20"),
+    ("Fz", float("inf"), r"Fz = inf"),
+    ("xi", float("nan"), r"xi = nan: expected a finite number"),
+    ("phi", [0.0, float("inf")], r"phi\[1\] = inf"),
+])
+def test_out_of_range_inputs_name_the_argument_and_the_range(arg, value, expect):
+    args = dict(a=6e-3, b=4e-3, Fz=75e3)
+    args[arg] = value
+    for model in ("linear", "fastsim"):
+        with pytest.raises(railsim.InputError, match=expect):
+            railsim.contact(model, **args)
+    if arg != "V":
+        with pytest.raises(railsim.InputError, match=expect.split(":")[0].replace(r"\[1\]", "")):
+            railsim.mim_fields(**{k: (v[1] if isinstance(v, list) else v) for k, v in args.items()}, grid=8)
+    # The range's edge is accepted: V = 0 (no rolling speed given) and 200 m/s.
+    for V in (0.0, 200.0):
+        r = railsim.contact("fastsim", 1e-3, a=6e-3, b=4e-3, Fz=75e3, V=V)
+        assert r["valid"] and r["Fx"] < 0.0

@@ -20,6 +20,11 @@ def test_shipped_profiles_and_errors():
         railsim.read_profile("S1002", "rail")
     with pytest.raises(railsim.InputError, match="cannot open"):
         railsim.read_profile("/no/such/profile.prw", "wheel")
+    # The unit option: 0 (from the file) or metres per file unit in [1e-6, 1].
+    for unit in (-1.0, float("nan"), 2.0):
+        with pytest.raises(railsim.InputError, match=r"unit option = .*expected 0 .* in \[1e-6, 1\]"):
+            railsim.read_profile("S1002", "wheel", unit=unit)
+    assert railsim.read_profile("S1002", "wheel", unit=1e-3).y.size == w.y.size
 
 
 def test_geometry_is_mirror_symmetric_and_matches_the_program(cli, tmp_path):
@@ -55,3 +60,7 @@ def test_conicity_matches_the_program(cli, tmp_path):
     assert np.all((c["equivalent_conicity"] > 0.05) & (c["equivalent_conicity"] < 0.5))
     # delta r is odd in y, to the contact search's precision (measured 8e-9 m).
     np.testing.assert_allclose(c["delta_r"], -c["delta_r"][::-1], rtol=0, atol=5e-8)
+    # Amplitudes: positive and within the table; the message names the list element and the range.
+    for bad in ([0.0], [3e-3, -1e-3], [0.02]):
+        with pytest.raises(railsim.InputError, match=r"amplitudes\[\d\]: .*expected a value in \(0, 0.012\] m"):
+            g.conicity(amplitudes=bad, cache_dir=str(tmp_path))

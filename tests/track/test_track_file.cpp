@@ -115,6 +115,12 @@ TEST_CASE("malformed track files name the segment and the key", "[tracks][track_
              Catch::Contains("segments[1] (clothoid): a clothoid") && Catch::Contains("cannot be adjacent"));
   CHECK_THAT(error_of("name: x\nsegmnts: []\n"), Catch::Contains("key 'segmnts': unknown key"));
   CHECK_THAT(error_of("segments: []\n"), Catch::Contains("at least one segment"));
+  // The gauge lies inside the distance of the rail centres.
+  CHECK_THAT(error_of("gauge: 1.6\nsegments:\n  - {type: straight, length: 50}\n"),
+             Catch::Contains("t.yaml:1: key 'gauge': gauge 1.6 m is not smaller than rail_spacing 1.5 m (the default)"));
+  CHECK_THAT(error_of("rail_spacing: 1.2\nsegments:\n  - {type: straight, length: 50}\n"),
+             Catch::Contains("t.yaml:1: key 'rail_spacing': gauge 1.435 m is not smaller than rail_spacing 1.2 m"));
+  CHECK(error_of("gauge: 1.676\nrail_spacing: 1.75\nsegments:\n  - {type: straight, length: 50}\n") == "no error");
   // Irregularities.
   CHECK_THAT(error_of(std::string(kCurve) + "irregularities:\n  - {type: bump, start: 3}\n"),
              Catch::Contains("irregularities[0] (bump): key 'type': unknown irregularity type 'bump'") &&
