@@ -161,7 +161,7 @@ EquilibriumResult newton_equilibrium(const Model& model, const Eigen::VectorXd& 
       g[k] = f[p.equation[std::size_t(k)]];
       merit += (p.weight[std::size_t(k)] * g[k]) * (p.weight[std::size_t(k)] * g[k]);
     }
-    last_max = g.cwiseAbs().maxCoeff();
+    last_max = m > 0 ? g.cwiseAbs().maxCoeff() : 0.0;  // no unknowns (a wheelset held alone): nothing to balance
     return std::sqrt(merit);
   };
   Eigen::VectorXd g;
