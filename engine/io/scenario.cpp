@@ -216,7 +216,7 @@ struct ContactSection {
 contact::Material read_material(const InputNode& mat, CouplingOptions& co, std::vector<std::string>& warnings) {
   mat.allow_only({"E", "nu", "mu", "shear_modulus"});
   contact::Material m = co.material;
-  if (mat.has("E")) m.E = mat.positive("E");
+  if (mat.has("E")) m.E = mat.in_range("E", 1e9, 1e13);  // [Pa], as contact case files (steel 2.1e11)
   if (mat.has("nu")) m.nu = mat.in_range("nu", 0.0, 0.5, true, false);
   if (mat.has("mu")) m.mu = mat.in_range("mu", 0.0, 2.0, true);
   if (m.mu > 1.0) {
@@ -225,7 +225,7 @@ contact::Material read_material(const InputNode& mat, CouplingOptions& co, std::
                        "measured wheel-rail friction)");
     spdlog::warn("{}", warnings.back());
   }
-  co.shear_modulus = mat.has("shear_modulus") ? mat.positive("shear_modulus") : 0.0;
+  co.shear_modulus = mat.has("shear_modulus") ? mat.in_range("shear_modulus", 1e9, 1e13) : 0.0;  // [Pa]
   return m;
 }
 
@@ -264,17 +264,24 @@ ContactSection read_contact(const InputNode& c, const std::string& base, Scenari
   }
   if (auto f = c.find("creep_coefficients")) {
     f->allow_only({"f11", "f22", "f23", "f33", "N_ref"});
-    co.f11 = f->positive("f11");
-    co.f22 = f->positive("f22");
-    co.f23 = f->has("f23") ? f->non_negative("f23") : 0.0;
-    co.f33 = f->has("f33") ? f->non_negative("f33") : 0.0;
-    co.N_ref = f->has("N_ref") ? f->non_negative("N_ref") : 0.0;
+    // Kalker's coefficients of a wheel-rail patch: f11, f22 of the order of
+    // 1e6-1e8 N (G a b C11 at 50-200 kN), f23 1e3-1e5 N m, f33 up to about
+    // 1e2 N m^2; the ranges leave two decades on either side. N_ref: the load
+    // they belong to (0: constant coefficients).
+    co.f11 = f->in_range("f11", 0.0, 1e10, true);
+    co.f22 = f->in_range("f22", 0.0, 1e10, true);
+    co.f23 = f->has("f23") ? f->in_range("f23", 0.0, 1e8) : 0.0;
+    co.f33 = f->has("f33") ? f->in_range("f33", 0.0, 1e6) : 0.0;
+    co.N_ref = f->has("N_ref") ? f->in_range("N_ref", 0.0, 1e7) : 0.0;
+    if (co.N_ref > 0.0 && co.N_ref < 1.0)
+      f->at("N_ref").fail("expected 0 (constant coefficients) or a wheel load in [1, 1e7] N (got " +
+                          config::format_number(co.N_ref) + ")");
   }
   if (auto p = c.find("patch")) {
     p->allow_only({"a", "b", "N_ref"});
-    co.patch_a = p->positive("a");
-    co.patch_b = p->positive("b");
-    co.N_ref = p->positive("N_ref");
+    co.patch_a = p->in_range("a", 1e-6, 1.0);  // [m], as contact case files
+    co.patch_b = p->in_range("b", 1e-6, 1.0);
+    co.N_ref = p->in_range("N_ref", 1.0, 1e7);  // [N]
   }
   if (auto sp = c.find("spin")) co.spin = sp->as_bool();
   if (c.has("normal_damping")) co.normal_damping = c.in_range("normal_damping", 0.0, 1e8);
