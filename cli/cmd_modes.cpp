@@ -79,7 +79,7 @@ int run_modes(const ModesArgs& a) {
   csv.close();
   const double v_lin = sweep.linear_critical_speed;
   for (int k = 0; k < a.count; ++k) chart.series.push_back(zeta[k]), fchart.series.push_back(freq[k]);
-  if (!std::isnan(v_lin)) {
+  if (!std::isnan(v_lin) && !sweep.unstable_at_v_lo) {
     chart.lines.push_back({v_lin * 3.6, "linear critical speed", "r", true});
     fchart.lines.push_back({v_lin * 3.6, "linear critical speed", "r", true});
   }
@@ -96,9 +96,17 @@ int run_modes(const ModesArgs& a) {
   summary.set("mu", sc.model.coupling.options().material.mu);
   summary.set("speed_range_kmh", results::Json::array().push(a.v_min_kmh).push(a.v_max_kmh));
   summary.set("speed_step_kmh", a.v_step_kmh);
-  summary.set("linear_critical_speed_kmh", std::isnan(v_lin) ? results::Json(nullptr) : results::Json(v_lin * 3.6));
+  // Unstable already at --v-min: no critical speed in the range, only a bound.
+  const bool below = sweep.unstable_at_v_lo;
+  summary.set("linear_critical_speed_kmh",
+              std::isnan(v_lin) || below ? results::Json(nullptr) : results::Json(v_lin * 3.6));
+  summary.set("unstable_at_v_min", below);
   summary.write_file(a.out + "/summary.json");
-  if (std::isnan(v_lin))
+  if (below)
+    std::printf("linear critical speed: at or below %.1f km/h (unstable already at --v-min; lower --v-min to find "
+                "it)\n",
+                a.v_min_kmh);
+  else if (std::isnan(v_lin))
     std::printf("linear critical speed: none in %.0f..%.0f km/h (stable throughout)\n", a.v_min_kmh, a.v_max_kmh);
   else
     std::printf("linear critical speed: %.1f km/h\n", v_lin * 3.6);

@@ -347,6 +347,10 @@ Scenario with_reduction(const Scenario& scenario, const contact::ReductionSpec& 
   return s;
 }
 
+bool linearly_unstable(const Scenario& scenario, double v) {
+  return max_real_part(scenario.model, v) > kUnstableGrowth;
+}
+
 double linear_critical_speed(const Scenario& scenario, double v_lo, double v_hi) {
   const double lo = max_real_part(scenario.model, v_lo);
   const double hi = max_real_part(scenario.model, v_hi);

@@ -164,8 +164,12 @@ struct RampingResult {
 RampingResult ramping(const Scenario& scenario, const RampingOptions& options);
 
 // Linear critical speed by bisection of the largest real part over [v_lo, v_hi];
-// NaN when stable over the whole range.
+// NaN when stable over the whole range; v_lo when already unstable there (the
+// critical speed lies at or below v_lo: see linearly_unstable).
 double linear_critical_speed(const Scenario& scenario, double v_lo, double v_hi);
+// Whether the linearised vehicle is unstable at speed v [m/s] (a real part
+// above kUnstableGrowth, the bisection's threshold).
+bool linearly_unstable(const Scenario& scenario, double v);
 
 // InputError when the tangential model `model` solves a contact patch and the
 // scenario gives none (conical wheels with prescribed creep coefficients only

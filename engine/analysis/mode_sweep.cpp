@@ -24,7 +24,8 @@ std::vector<std::vector<Mode>> modes_versus_speed(const Scenario& sc, const std:
 ModeSweep mode_sweep(const Scenario& sc, const std::vector<double>& speeds, int count, double v_lo, double v_hi) {
   ModeSweep r;
   r.modes = modes_versus_speed(sc, speeds, count);
-  r.linear_critical_speed = linear_critical_speed(sc, v_lo, v_hi);
+  r.unstable_at_v_lo = linearly_unstable(sc, v_lo);
+  r.linear_critical_speed = r.unstable_at_v_lo ? v_lo : linear_critical_speed(sc, v_lo, v_hi);
   return r;
 }
 

@@ -21,7 +21,8 @@ std::vector<std::vector<Mode>> modes_versus_speed(const Scenario& scenario, cons
 
 struct ModeSweep {
   std::vector<std::vector<Mode>> modes;  // per speed, as modes_versus_speed
-  double linear_critical_speed = 0.0;    // [m/s]; NaN: stable over [v_lo, v_hi]
+  double linear_critical_speed = 0.0;    // [m/s]; NaN: stable over [v_lo, v_hi]; v_lo when unstable there
+  bool unstable_at_v_lo = false;         // already unstable at v_lo: the critical speed is at or below it
 };
 ModeSweep mode_sweep(const Scenario& scenario, const std::vector<double>& speeds, int count, double v_lo,
                      double v_hi);

@@ -28,6 +28,7 @@ line and key; ``railsim.NumericalError`` (an ArithmeticError) when the
 numerics fail.
 """
 import json as _json
+import math as _math
 import os as _os
 import tempfile as _tempfile
 
@@ -174,8 +175,23 @@ def run(sc, out=None):
     return RunResult(r["names"], r["data"], _json.loads(r["summary_json"]))
 
 
-def _nan(v):
-    return float("nan") if v is None else float(v)
+def _given(what, name, v):
+    """A number given by the caller, or NaN (the C++ side's "not given") for None;
+    a non-finite number is refused (NaN would read as "not given")."""
+    if v is None:
+        return float("nan")
+    f = float(v)
+    if not _math.isfinite(f):
+        raise InputError(f"{what}: {name} = {v}: expected a finite number (omit it for the scenario's setting)")
+    return f
+
+
+def _whole(what, name, v):
+    """An integer argument; 1.5 is refused rather than truncated."""
+    f = float(v)
+    if not (_math.isfinite(f) and f == int(f)):
+        raise InputError(f"{what}: {name} = {v}: expected a whole number")
+    return int(f)
 
 
 def critical_speed(sc, method="bifurcation", *, model="", reduction="", v_min_kmh=None, v_max_kmh=None,
@@ -194,8 +210,12 @@ def critical_speed(sc, method="bifurcation", *, model="", reduction="", v_min_km
     s = _scenario_of(sc)
     cont = -1 if continuation is None else int(bool(continuation))
     args = (s, method, model, reduction if isinstance(reduction, str) else ",".join(map(str, _reduction(reduction))),
-            _nan(v_min_kmh), _nan(v_max_kmh), _nan(v_step_kmh), _nan(duration), _nan(disturbance_mm),
-            _nan(small_disturbance_mm), _nan(threshold_mm), _nan(deceleration), bool(up_branch), cont, int(threads))
+            *(_given("critical_speed", n, v) for n, v in (
+                ("v_min_kmh", v_min_kmh), ("v_max_kmh", v_max_kmh), ("v_step_kmh", v_step_kmh),
+                ("duration", duration), ("disturbance_mm", disturbance_mm),
+                ("small_disturbance_mm", small_disturbance_mm), ("threshold_mm", threshold_mm),
+                ("deceleration", deceleration))),
+            bool(up_branch), cont, _whole("critical_speed", "threads", threads))
     if out is not None:
         return _railsim._critical_speed(*args, _os.fspath(out))
     with _tempfile.TemporaryDirectory(prefix="railsim_cs_") as tmp:
@@ -205,5 +225,8 @@ def critical_speed(sc, method="bifurcation", *, model="", reduction="", v_min_km
 def modes(sc, v_min_kmh=20.0, v_max_kmh=400.0, v_step_kmh=10.0, count=6):
     """Least damped oscillatory modes versus speed, as `railsim modes`: arrays
     speed_kmh, rank, frequency_hz, damping_ratio, real_1_s, imag_rad_s and the
-    linear critical speed (None when stable throughout)."""
-    return _railsim._modes(_scenario_of(sc), float(v_min_kmh), float(v_max_kmh), float(v_step_kmh), int(count))
+    linear critical speed (None when stable throughout, or when already unstable at
+    v_min_kmh: then unstable_at_v_min is True and the critical speed lies at or
+    below v_min_kmh)."""
+    return _railsim._modes(_scenario_of(sc), float(v_min_kmh), float(v_max_kmh), float(v_step_kmh),
+                           _whole("modes", "count", count))

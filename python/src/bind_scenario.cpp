@@ -171,10 +171,12 @@ py::dict modes(const engine::Scenario& sc, double v_min_kmh, double v_max_kmh, d
   for (int i = 0; i < n; ++i) speeds.push_back((v_min_kmh + i * v_step_kmh) / 3.6);
   std::vector<std::vector<engine::Mode>> all;
   double v_lin = NAN;
+  bool below = false;  // unstable already at v_min_kmh: the critical speed is at or below it
   {
     py::gil_scoped_release release;
     all = engine::modes_versus_speed(sc, speeds, count);
-    v_lin = engine::linear_critical_speed(sc, v_min_kmh / 3.6, v_max_kmh / 3.6);
+    below = engine::linearly_unstable(sc, v_min_kmh / 3.6);
+    if (!below) v_lin = engine::linear_critical_speed(sc, v_min_kmh / 3.6, v_max_kmh / 3.6);
   }
   std::vector<double> v, f, z, re, im;
   std::vector<int> rank;
@@ -189,6 +191,7 @@ py::dict modes(const engine::Scenario& sc, double v_min_kmh, double v_max_kmh, d
   d["speed_kmh"] = to_array(v), d["rank"] = rank, d["frequency_hz"] = to_array(f), d["damping_ratio"] = to_array(z);
   d["real_1_s"] = to_array(re), d["imag_rad_s"] = to_array(im);
   d["linear_critical_speed_kmh"] = std::isnan(v_lin) ? py::object(py::none()) : py::object(py::float_(v_lin * 3.6));
+  d["unstable_at_v_min"] = below;
   return d;
 }
 

@@ -81,6 +81,11 @@ def test_modes_match_the_program(cli, tmp_path):
     np.testing.assert_allclose([float(r["frequency_hz"]) for r in rows], m["frequency_hz"], rtol=1e-8)
     if m["linear_critical_speed_kmh"] is not None:
         assert f"{m['linear_critical_speed_kmh']:.1f} km/h" in text
+    assert m["unstable_at_v_min"] is False
+    # Already unstable at v_min (the shipped wheelset's linear critical speed, 176.5 km/h, lies below 180):
+    # no critical speed, a flag, as the program says "at or below".
+    a = railsim.modes(sc, 180, 200, 10, count=1)
+    assert a["linear_critical_speed_kmh"] is None and a["unstable_at_v_min"] is True
 
 
 def test_critical_speed_matches_the_program(cli, tmp_path):
@@ -138,6 +143,11 @@ def test_critical_speed_says_when_there_is_no_verdict(cli, tmp_path):
     (dict(threshold_mm=-1.0), "threshold_mm: expected a number in [0.001, 20] mm"),
     (dict(deceleration=50.0), "deceleration: expected a number in [0.001, 10] m/s^2"),
     (dict(threads=-3), "threads: expected a whole number in [0, 256]"),
+    # NaN is the binding's "not given": given by the caller it is refused, not replaced by the default.
+    (dict(v_min_kmh=float("nan"), v_max_kmh=100.0), "critical_speed: v_min_kmh = nan: expected a finite number"),
+    (dict(duration=float("nan")), "critical_speed: duration = nan: expected a finite number"),
+    (dict(threshold_mm=float("inf")), "critical_speed: threshold_mm = inf: expected a finite number"),
+    (dict(threads=1.5), "critical_speed: threads = 1.5: expected a whole number"),
 ])
 def test_critical_speed_refuses_what_the_program_refuses(kwargs, names):
     # The command line's ranges, naming the Python argument (before: a 1 ms duration gave no critical speed and
@@ -152,6 +162,7 @@ def test_critical_speed_refuses_what_the_program_refuses(kwargs, names):
     ((50.0, 200.0, 1e-9), 6, "v_step_kmh 1e-09: 50..200 km/h would take"),
     ((50.0, 800.0, 10.0), 6, "need 0 < v_min_kmh < v_max_kmh <= 720 km/h"),
     ((50.0, 100.0, 10.0), 0, "count: expected a whole number in [1, 50]"),
+    ((50.0, 100.0, 10.0), 1.5, "modes: count = 1.5: expected a whole number"),
 ])
 def test_modes_refuses_what_the_program_refuses(args, count, names):
     # Before: a 1e-9 km/h step overflowed the speed count (empty arrays, no error), 1e-6 grew past 1.4 GB.

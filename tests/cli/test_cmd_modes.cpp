@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <string>
 
+#include "json_support.hpp"
 #include "results/csv_writer.hpp"
 #include "test_support.hpp"
 
@@ -28,6 +29,16 @@ TEST_CASE("railsim modes: damping of the least damped mode changes sign at the c
     if (v < 160) CHECK(zeta > 0);
     if (v > 170) CHECK(zeta < 0);
   }
+  // Unstable already at --v-min (above 164.1 km/h): no critical speed in the range, only its bound.
+  const auto above = run_railsim("modes '" + scenario + "' --v-min 180 --v-max 200 --v-step 10 --out '" + dir + "/above'");
+  INFO(above.output);
+  REQUIRE(above.exit_code == 0);
+  CHECK(above.output.find("linear critical speed: at or below 180.0 km/h (unstable already at --v-min") !=
+        std::string::npos);
+  const auto js = railsim::test::read_json(dir + "/above/summary.json");
+  CHECK(js["linear_critical_speed_kmh"].is_null());
+  CHECK(js["unstable_at_v_min"] == true);
+  CHECK(railsim::test::read_json(dir + "/summary.json")["unstable_at_v_min"] == false);
   CHECK(run_railsim("modes '" + scenario + "' --v-min 200 --v-max 100 --out '" + dir + "'").exit_code == 2);
   CHECK(run_railsim("modes '" + scenario + "' --count 0 --out '" + dir + "'").exit_code == 2);
 }
