@@ -3,11 +3,18 @@
 // curve: of wheel and rail profiles (railsim's contact search), or with
 // --table of a contact-geometry table file (RSGEO format, the engine's smoothed
 // reading of it, engine/wheel_rail/geometry_table.hpp).
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "cli/commands.hpp"
 #include "cli/support_geometry.hpp"
+#include "config/yaml_input.hpp"
 #include "contact/geometry/conicity.hpp"
+#include "core/errors.hpp"
 #include "engine/wheel_rail/geometry_table.hpp"
 #include "results/csv_writer.hpp"
 
@@ -23,26 +30,58 @@ void register_conicity(CLI::App& app, CommandRunner& run) {
   cmd->add_option("--table", *table,
                   "Contact-geometry table file (RSGEO format, e.g. vehicles/contact_tables/RSGEO_S1002_UIC60_1in40.dat) "
                   "instead of profiles");
-  cmd->callback([&run, o, out, table] {
-    run = [o, out, table] {
+  cmd->callback([&run, cmd, o, out, table] {
+    // With --table the file holds its own geometry and shift grid: the
+    // profile and grid options do not apply (they were ignored silently).
+    std::string misplaced;
+    if (!table->empty())
+      for (const char* opt : {"--wheel", "--rail", "--wheel-units", "--rail-units", "--inclination", "--gauge",
+                              "--gauge-depth", "--flange-back", "--back-face", "--radius", "--y-min", "--y-max",
+                              "--y-step", "--cache-dir", "--no-cache"})
+        if (misplaced.empty() && cmd->count(opt) > 0) misplaced = opt;
+    run = [o, out, table, misplaced] {
+      if (!misplaced.empty())
+        throw InputError(misplaced + ": does not apply with --table (the table file holds its own geometry and "
+                                     "shift grid)");
       if (!table->empty()) {
         const engine::GeometryTable t(*table);
         auto dr = [&](double y) { return t.main_point(y).rolling_radius - t.main_point(-y).rolling_radius; };
+        const int fitting = std::min(6, int(std::floor(t.max_shift() * 1e3 + 1e-9)));
+        if (fitting < 1)
+          throw InputError("--table " + *table + ": the table covers shifts up to +-" +
+                           config::format_number(t.max_shift() * 1e3) +
+                           " mm: no amplitude of 1..6 mm fits (the sweep +-A must lie within the table)");
         std::printf("amplitude_mm,equivalent_conicity\n");
-        for (int a = 1; a <= 6; ++a) {
-          if (a * 1e-3 > t.max_shift()) break;
-          std::printf("%d,%.5f\n", a, contact::equivalent_conicity(dr, a * 1e-3));
-        }
+        for (int a = 1; a <= fitting; ++a) std::printf("%d,%.5f\n", a, contact::equivalent_conicity(dr, a * 1e-3));
+        if (fitting < 6)
+          spdlog::warn("--table {}: amplitudes {}..6 mm lie beyond the table's +-{} mm: not computed", *table,
+                       fitting + 1, config::format_number(t.max_shift() * 1e3));
         if (!out->empty()) {
+          // 0.1 mm, finer on a narrow table (at least 100 intervals).
+          const double step = std::min(1e-4, t.max_shift() / 50.0);
+          const int n = int(std::floor(2.0 * t.max_shift() / step + 1e-9));
           results::CsvWriter w(*out, {"y", "delta_r"}, false, 0, 10);
-          for (double y = -t.max_shift(); y <= t.max_shift() + 1e-12; y += 1e-4) w.row({y, dr(y)});
+          for (int i = 0; i <= n; ++i) {
+            const double y = -t.max_shift() + i * step;
+            w.row({y, dr(y)});
+          }
         }
         return 0;
       }
       const GeometrySetup g = make_geometry(*o);
       const contact::ContactTable t = make_table(*o, g);
+      double c[6];
+      for (int a = 1; a <= 6; ++a) {
+        try {
+          c[a - 1] = contact::equivalent_conicity(t, a * 1e-3);
+        } catch (const InputError& e) {
+          throw InputError(std::string(std::string(e.what()).find("y step") != std::string::npos ? "--y-step"
+                                                                                                  : "--y-min/--y-max") +
+                           ": " + e.what());
+        }
+      }
       std::printf("amplitude_mm,equivalent_conicity\n");
-      for (int a = 1; a <= 6; ++a) std::printf("%d,%.5f\n", a, contact::equivalent_conicity(t, a * 1e-3));
+      for (int a = 1; a <= 6; ++a) std::printf("%d,%.5f\n", a, c[a - 1]);
       if (!out->empty()) {
         const auto c = contact::rolling_radius_difference(t);
         results::CsvWriter w(*out, {"y", "delta_r"}, false, 0, 10);

@@ -35,6 +35,16 @@ double equivalent_conicity(const ContactTable& table, double amplitude, int samp
                   amplitude, std::min(-g.y_min, g.y_max), g.y_min, g.y_max);
     throw InputError(buf);
   }
+  // The regression needs the delta-r curve resolved over the sweep: rows at
+  // most a quarter of the amplitude apart (a 12 mm step gave 0 at every amplitude).
+  if (g.y_step > 0.25 * amplitude + 1e-15) {
+    char buf[200];
+    std::snprintf(buf, sizeof buf,
+                  "equivalent conicity at amplitude %.6g mm: the table's y step %.6g mm is too coarse (at most a "
+                  "quarter of the amplitude, %.6g mm)",
+                  amplitude * 1e3, g.y_step * 1e3, 0.25 * amplitude * 1e3);
+    throw InputError(buf);
+  }
   return equivalent_conicity(
       [&](double y) {
         TableSample s;

@@ -23,7 +23,8 @@ struct RollingRadiusCurve {
 
 RollingRadiusCurve rolling_radius_difference(const ContactTable& table);
 
-// Equivalent conicity at amplitude A [m]; InputError when +-A leaves the table.
+// Equivalent conicity at amplitude A [m]; InputError when +-A leaves the table
+// or its y step exceeds A/4 (too coarse to resolve the delta-r curve).
 double equivalent_conicity(const ContactTable& table, double amplitude, int samples = 2000);
 // The same for any rolling-radius difference Delta r(y) [m] defined on [-A, A].
 double equivalent_conicity(const std::function<double(double)>& delta_r, double amplitude, int samples = 2000);

@@ -64,3 +64,6 @@ def test_conicity_matches_the_program(cli, tmp_path):
     for bad in ([0.0], [3e-3, -1e-3], [0.02]):
         with pytest.raises(railsim.InputError, match=r"amplitudes\[\d\]: .*expected a value in \(0, 0.012\] m"):
             g.conicity(amplitudes=bad, cache_dir=str(tmp_path))
+    # A shift step too coarse for the regression (0.024 m gave 15.85 at 1 mm).
+    with pytest.raises(railsim.InputError, match=r"amplitudes\[0\]: .*y step 24 mm is too coarse"):
+        g.conicity(y_step=0.024, cache_dir=str(tmp_path))

@@ -247,6 +247,15 @@ TEST_CASE("railsim on bad options: exit 2 naming the option and the range", "[cl
       {"--y-max 1", "conicity --y-max 1 --no-cache", {"--y-min/--y-max: ", "-0.05 <= y_min < y_max <= 0.05 m"}},
       {"a table with a = 0 on conicity", "conicity --table " + bad("table_zero_a.dat"),
        {"table_zero_a.dat:5: column 4 (a [m])", "(0, 0.1]"}},
+      // conicity: a table too narrow for every amplitude, geometry options that a table does not take,
+      // a shift step too coarse for the regression (12 mm gave 0 at every amplitude).
+      {"a +-0.5 mm table on conicity", "conicity --table " + bad("table_narrow.dat"),
+       {"table_narrow.dat: the table covers shifts up to +-0.5 mm: no amplitude of 1..6 mm fits"}},
+      {"--gauge with --table", "conicity --table " + bad("table_narrow.dat") + " --gauge 99",
+       {"--gauge: does not apply with --table"}},
+      {"--y-step 0.012 on conicity", "conicity --y-step 0.012 --no-cache",
+       {"--y-step: equivalent conicity at amplitude 1 mm: the table's y step 12 mm is too coarse",
+        "(at most a quarter of the amplitude, 0.25 mm)"}},
   });
 }
 
