@@ -81,6 +81,33 @@ void check_range(const Column& c, const char* name, double lo, double hi, bool l
   }
 }
 
+Column one(const double& v) { return Column{&v, 1, 0}; }
+
+// The Hertz patch of one point with the ranges of `railsim contact`'s case
+// files: Fz, E, nu, the curvatures or semi-axes given, and the semi-axes of
+// the patch the curvatures give, in [1e-6, 1] m.
+contact::HertzPatch checked_hertz_patch(double s1, double s2, bool curvatures, double Fz,
+                                        const contact::Material& m) {
+  constexpr double kHuge = std::numeric_limits<double>::max();
+  if (curvatures) {
+    check_range(one(s1), "A", 0.0, kHuge, true, false, " 1/m");
+    check_range(one(s2), "B", 0.0, kHuge, true, false, " 1/m");
+  } else {
+    check_range(one(s1), "a", 1e-6, 1.0, false, false, " m");
+    check_range(one(s2), "b", 1e-6, 1.0, false, false, " m");
+  }
+  check_range(one(Fz), "Fz", 0.0, 1e7, true, false, " N");
+  check_range(one(m.E), "E", 1e9, 1e13, false, false, " Pa");
+  check_range(one(m.nu), "nu", 0.0, 0.5, false, true);
+  const contact::HertzPatch p =
+      curvatures ? contact::hertz_from_load(s1, s2, Fz, m) : contact::hertz_from_semi_axes(s1, s2, Fz, m);
+  if (curvatures) {
+    check_range(one(p.a), "the patch's semi-axis a (from A, B and Fz)", 1e-6, 1.0, false, false, " m");
+    check_range(one(p.b), "the patch's semi-axis b (from A, B and Fz)", 1e-6, 1.0, false, false, " m");
+  }
+  return p;
+}
+
 py::dict solve_arrays(const std::string& model_name, bool curvatures, const Array& xi, const Array& eta,
                       const Array& phi, const Array& s1, const Array& s2, const Array& fz, const Array& e,
                       const Array& nu, const Array& mu, const Array& v, const Array& k11, const Array& k22,
@@ -146,6 +173,12 @@ py::dict solve_arrays(const std::string& model_name, bool curvatures, const Arra
       in.material.nu = cnu[i];
       in.patch = curvatures ? contact::hertz_from_load(c1[i], c2[i], cf[i], in.material)
                             : contact::hertz_from_semi_axes(c1[i], c2[i], cf[i], in.material);
+      if (curvatures && !(in.patch.a >= 1e-6 && in.patch.a <= 1.0 && in.patch.b >= 1e-6 && in.patch.b <= 1.0)) {
+        std::ostringstream m;
+        m << "point " << i << ": the patch of A, B and Fz has semi-axes a = " << in.patch.a << " m, b = " << in.patch.b
+          << " m: expected values in [1e-06, 1] m";
+        throw InputError(m.str());
+      }
     };
     if (fixed_patch) {
       solve_patch(0);
@@ -216,24 +249,12 @@ py::dict mim_fields(double s1, double s2, bool curvatures, double Fz, double xi,
   if (grid > 0) o.grid = grid;
   if (tolerance > 0) o.tolerance = tolerance;
   o.check();
-  const auto one = [](const double& v) { return Column{&v, 1, 0}; };
   constexpr double kHuge = std::numeric_limits<double>::max();
   for (const auto& [v, name] : {std::pair{xi, "xi"}, std::pair{eta, "eta"}, std::pair{phi, "phi"}})
     check_range(one(v), name, -kHuge, kHuge);
-  if (curvatures) {
-    check_range(one(s1), "A", 0.0, kHuge, true, false, " 1/m");
-    check_range(one(s2), "B", 0.0, kHuge, true, false, " 1/m");
-  } else {
-    check_range(one(s1), "a", 1e-6, 1.0, false, false, " m");
-    check_range(one(s2), "b", 1e-6, 1.0, false, false, " m");
-  }
-  check_range(one(Fz), "Fz", 0.0, 1e7, true, false, " N");
-  check_range(one(E), "E", 1e9, 1e13, false, false, " Pa");
-  check_range(one(nu), "nu", 0.0, 0.5, false, true);
   check_range(one(mu), "mu", 0.0, 2.0, true);
   const contact::Material m{E, nu, mu};
-  const contact::HertzPatch patch =
-      curvatures ? contact::hertz_from_load(s1, s2, Fz, m) : contact::hertz_from_semi_axes(s1, s2, Fz, m);
+  const contact::HertzPatch patch = checked_hertz_patch(s1, s2, curvatures, Fz, m);
   contact::mim::MimSolver solver(o);
   const contact::mim::MimSolution* s = nullptr;
   {
@@ -290,9 +311,7 @@ void bind_contact(py::module_& m) {
     return py::make_tuple(k.k11, k.k22, k.k23);
   }, py::arg("text"));
   m.def("hertz_patch", [](double s1, double s2, bool curvatures, double Fz, double E, double nu) {
-    const contact::Material mat{E, nu, 0.3};
-    const contact::HertzPatch p =
-        curvatures ? contact::hertz_from_load(s1, s2, Fz, mat) : contact::hertz_from_semi_axes(s1, s2, Fz, mat);
+    const contact::HertzPatch p = checked_hertz_patch(s1, s2, curvatures, Fz, contact::Material{E, nu, 0.3});
     py::dict d;
     d["A"] = p.A, d["B"] = p.B, d["a"] = p.a, d["b"] = p.b, d["p0"] = p.p0, d["approach"] = p.approach, d["Fz"] = p.Fz;
     return d;

@@ -170,3 +170,21 @@ def test_out_of_range_inputs_name_the_argument_and_the_range(arg, value, expect)
     for V in (0.0, 200.0):
         r = railsim.contact("fastsim", 1e-3, a=6e-3, b=4e-3, Fz=75e3, V=V)
         assert r["valid"] and r["Fx"] < 0.0
+
+
+def test_hertz_patch_checks_the_ranges_of_contact():
+    p = railsim.hertz_patch(A=2.0, B=10.0, Fz=75e3)
+    assert 1e-3 < p["a"] < 1e-2 and p["Fz"] == 75e3
+    for kwargs, expect in [
+        (dict(A=1.0, B=1.0, Fz=1e300), r"Fz = 1e\+300: expected a value in \(0, 1e\+07\] N"),
+        (dict(A=1.0, B=1.0, Fz=1e4, E=1.0), r"E = 1: expected a value in \[1e\+09, 1e\+13\] Pa"),
+        (dict(a=1e100, b=1e100, Fz=1e4), r"a = 1e\+100: expected a value in \[1e-06, 1\] m"),
+        (dict(A=1e-12, B=1e-12, Fz=1e4), r"semi-axis a \(from A, B and Fz\)"),
+    ]:
+        with pytest.raises(railsim.InputError, match=expect):
+            railsim.hertz_patch(**kwargs)
+    # contact() and mim_fields() take the same patches.
+    with pytest.raises(railsim.InputError, match=r"point 0: the patch of A, B and Fz has semi-axes"):
+        railsim.contact("linear", 1e-3, A=1e-12, B=1e-12, Fz=1e4)
+    with pytest.raises(railsim.InputError, match=r"semi-axis a \(from A, B and Fz\)"):
+        railsim.mim_fields(1e-3, A=1e-12, B=1e-12, Fz=1e4, grid=8)
