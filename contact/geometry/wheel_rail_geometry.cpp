@@ -38,14 +38,17 @@ double parse_inclination(const std::string& text, const std::string& where) {
   char* end = nullptr;
   if (slash != std::string::npos) {
     const std::string a = text.substr(0, slash), b = text.substr(slash + 1);
+    // Whole texts only (an embedded NUL ended the number early) and finite
+    // numbers (1/inf and 1/1e400 read as slope 0).
     const double num = std::strtod(a.c_str(), &end);
-    const bool ok_a = end != a.c_str() && *end == '\0';
+    const bool ok_a = !a.empty() && end == a.c_str() + a.size() && std::isfinite(num);
     const double den = std::strtod(b.c_str(), &end);
-    const bool ok_b = end != b.c_str() && *end == '\0';
+    const bool ok_b = !b.empty() && end == b.c_str() + b.size() && std::isfinite(den);
     if (ok_a && ok_b && num >= 0 && den > 0 && num / den <= 0.2) return std::atan(num / den);
   } else {
     const double v = std::strtod(text.c_str(), &end);
-    if (end != text.c_str() && *end == '\0' && v >= 0 && v <= 0.2) return std::atan(v);
+    if (!text.empty() && end == text.c_str() + text.size() && std::isfinite(v) && v >= 0 && v <= 0.2)
+      return std::atan(v);
   }
   throw InputError(where + " '" + text + "': expected 1/N (e.g. 1/40, 1/20), a slope in [0, 0.2], or none");
 }

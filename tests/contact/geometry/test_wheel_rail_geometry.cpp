@@ -164,3 +164,20 @@ TEST_CASE("Out-of-range positions give InputError", "[geometry][search][errors]"
   bad.gauge = 3.0;
   CHECK_THROWS_WITH(bad.validate(), Catch::Contains("gauge"));
 }
+
+TEST_CASE("Rail inclination texts: 1/N, a slope or none; anything else named", "[geometry][errors]") {
+  CHECK(parse_inclination("1/40", "--inclination") == Approx(std::atan(1.0 / 40.0)));
+  CHECK(parse_inclination("0.05", "--inclination") == Approx(std::atan(0.05)));
+  CHECK(parse_inclination("none", "--inclination") == 0.0);
+  CHECK(parse_inclination("0", "--inclination") == 0.0);
+  // Non-finite parts (1/inf read as slope 0), a NUL inside the text (read up to it), empty parts, steep or
+  // negative slopes.
+  for (const std::string bad : {std::string("1/inf"), std::string("1/1e400"), std::string("inf"), std::string("nan"),
+                                std::string("1/0"), std::string("-1/40"), std::string("1/40x"),
+                                std::string("1/40\0x", 6), std::string(""), std::string("/40"), std::string("1/"),
+                                std::string("1/2")}) {
+    INFO("'" << bad << "'");
+    CHECK_THROWS_WITH(parse_inclination(bad, "--inclination"),
+                      Catch::Contains("--inclination '") && Catch::Contains("expected 1/N"));
+  }
+}
