@@ -134,8 +134,27 @@ def scenario(spec, base_dir=".", name="<python dict>"):
     """A scenario from a dict with the keys of a scenario file; relative file
     names (vehicle, track, tables) are taken from base_dir. Errors name the
     line of the dict's JSON form (json.dumps(spec, indent=1))."""
-    text = _json.dumps(spec, indent=1)
+    text = _json.dumps(_plain(spec, ""), indent=1)
     return _railsim._scenario_from_text(text, name, _os.fspath(base_dir))
+
+
+def _plain(v, key):
+    """The spec with numpy scalars and arrays as Python numbers and lists and
+    paths as strings; any other type is refused naming its key."""
+    if isinstance(v, dict):
+        return {k: _plain(x, f"{key}.{k}" if key else str(k)) for k, x in v.items()}
+    if isinstance(v, (list, tuple)):
+        return [_plain(x, f"{key}[{i}]") for i, x in enumerate(v)]
+    if isinstance(v, _np.ndarray):
+        return _plain(v.tolist(), key)
+    if isinstance(v, _np.generic):
+        return v.item()
+    if isinstance(v, _os.PathLike):
+        return _os.fspath(v)
+    if v is None or isinstance(v, (bool, int, float, str)):
+        return v
+    raise InputError(f"scenario: key '{key}': a {type(v).__name__} is not a scenario value "
+                     "(numbers, strings, booleans, lists and dicts)")
 
 
 def _scenario_of(sc):

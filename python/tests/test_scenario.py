@@ -67,6 +67,13 @@ def test_scenario_errors_name_file_line_and_key(tmp_path):
     spec.pop("speed", None)
     with pytest.raises(railsim.InputError, match=r"<python dict>:\d+: key 'speed_kmh'"):
         railsim.scenario(spec, base_dir=source("scenarios"))
+    # numpy numbers are numbers (np.int64 raised a TypeError); other objects are refused naming the key.
+    spec["speed_kmh"] = np.int64(90)
+    spec["duration"] = np.array(0.5)
+    assert railsim.scenario(spec, base_dir=source("scenarios")).duration == 0.5
+    spec["duration"] = object()
+    with pytest.raises(railsim.InputError, match=r"scenario: key 'duration': a object is not a scenario value"):
+        railsim.scenario(spec, base_dir=source("scenarios"))
 
 
 def test_modes_match_the_program(cli, tmp_path):
