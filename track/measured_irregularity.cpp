@@ -15,6 +15,8 @@ namespace railsim::track {
 
 namespace {
 
+constexpr double kMaxIrregularity = 0.2;  // [m], the range of a cosine defect's amplitude (defects.cpp)
+
 std::string trim(const std::string& t) {
   const auto b = t.find_first_not_of(" \t\r");
   if (b == std::string::npos) return "";
@@ -97,6 +99,10 @@ MeasuredTable read_measured_irregularity(const std::string& path, double unit) {
                            config::format_number(t.s.back()) + " m): rows must be sorted by increasing distance");
         t.s.push_back(v);
       } else {
+        // As a cosine defect's amplitude: a track irregularity within +-200 mm.
+        if (!(std::abs(v * unit) <= kMaxIrregularity))
+          fail(lineno, "column '" + header[i] + "': " + config::format_number(v) + (unit == 1.0 ? " m" : " mm") +
+                           " outside [-200, 200] mm, the range of a track irregularity");
         t.channels[static_cast<std::size_t>(ch)]->push_back(v * unit);
       }
     }
@@ -183,10 +189,25 @@ std::unique_ptr<IrregularityComponent> parse_measured_irregularity(const config:
     for (std::size_t c = 0; c < kChannelCount; ++c)
       if (!keep[c]) table.channels[c].reset();
   }
-  const double offset = node.number_or("offset", 0.0);
+  const double offset = node.has("offset") ? node.at("offset").as_in_range(-1e7, 1e7) : 0.0;
+  // The record must meet the track (an offset past its end gave a silent zero).
+  const double s0 = table.s.front() + offset, s1 = table.s.back() + offset;
+  if (context.track_length > 0.0 && (s1 <= 0.0 || s0 >= context.track_length))
+    (node.has("offset") ? node.at("offset") : fnode)
+        .fail("the record lies at s = " + config::format_number(s0) + " .. " + config::format_number(s1) +
+              " m, outside the track (0 .. " + config::format_number(context.track_length) +
+              " m): give an offset that places it on the track");
   const double span = table.s.back() - table.s.front();
   const double taper = node.has("taper") ? node.at("taper").as_in_range(0.0, 0.5 * span) : 0.0;
   const double scale = node.has("scale") ? node.at("scale").as_in_range(0.0, 100.0) : 1.0;
+  double largest = 0.0;
+  for (const auto& c : table.channels)
+    if (c)
+      for (double v : *c) largest = std::max(largest, std::abs(v));
+  if (largest * scale > kMaxIrregularity)
+    node.at("scale").fail("scale " + config::format_number(scale) + " makes the record's largest value " +
+                          config::format_number(largest * scale * 1e3) +
+                          " mm, outside [-200, 200] mm, the range of a track irregularity");
   return std::make_unique<MeasuredIrregularity>(std::move(table), offset, taper, scale);
 }
 

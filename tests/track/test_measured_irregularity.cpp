@@ -63,4 +63,7 @@ TEST_CASE("bad measured files give errors naming file and line", "[tracks][measu
   const std::string ragged = msg("measured_ragged.csv");
   CHECK_THAT(ragged, Catch::Contains("measured_ragged.csv:3:") && Catch::Contains("found 2"));
   CHECK_THAT(msg("does_not_exist.csv"), Catch::Contains("cannot open"));
+  // A value beyond any track irregularity (1e300 mm ran, and 'rms = inf mm' was printed).
+  CHECK_THAT(msg("measured_huge.csv"), Catch::Contains("measured_huge.csv:4: column 'lateral': 1e+300 mm outside "
+                                                       "[-200, 200] mm"));
 }

@@ -141,6 +141,14 @@ TEST_CASE("malformed track files name the segment and the key", "[tracks][track_
   CHECK_THAT(error_of(std::string(kCurve) +
                       "irregularities:\n  - {type: measured, file: measured_good.csv, channels: [gauge]}\n"),
              Catch::Contains("channel 'gauge' is not a column"));
+  // A record placed off the track (it gave a silent zero irregularity), a scale beyond the range.
+  CHECK_THAT(error_of(std::string(kCurve) + "irregularities:\n  - {type: measured, file: measured_good.csv, offset: 500}\n"),
+             Catch::Contains("irregularities[0] (measured): key 'offset'") &&
+                 Catch::Contains("outside the track (0 .. 270 m)"));
+  CHECK_THAT(error_of(std::string(kCurve) + "irregularities:\n  - {type: measured, file: measured_good.csv, offset: 1e300}\n"),
+             Catch::Contains("key 'offset'"));
+  CHECK_THAT(error_of(std::string(kCurve) + "irregularities:\n  - {type: measured, file: measured_large.csv, scale: 2}\n"),
+             Catch::Contains("key 'scale': scale 2 makes the record's largest value 300 mm"));
 }
 
 TEST_CASE("a measured irregularity and a twist load from YAML", "[tracks][track_file]") {
