@@ -40,7 +40,7 @@ Attachment attachment(const InputNode& e, const Model& m, double side_sign) {
   Attachment t;
   std::tie(t.body_a, t.body_b) = ends(e, m);
   auto point = [&](const char* key) {
-    Eigen::Vector3d p = read_vector3(e.at(key), false);
+    Eigen::Vector3d p = read_vector3(e.at(key), -kMaxVehicleCoordinate, kMaxVehicleCoordinate, "m");
     p.y() *= side_sign;
     return p;
   };
@@ -67,8 +67,8 @@ Element attached(const InputNode& e, const std::string& name, double side_sign, 
 void read_spring_damper(const InputNode& e, const std::string& name, double side_sign, Model& m) {
   e.allow_only({"type", "name", "body", "other", "at", "other_at", "stiffness", "damping", "sides"});
   auto s = attached<SpringDamper>(e, name, side_sign, m);
-  s.k = read_vector3(e.at("stiffness"), true);
-  s.c = e.has("damping") ? read_vector3(e.at("damping"), true) : Eigen::Vector3d::Zero();
+  s.k = read_vector3(e.at("stiffness"), 0.0, kMaxStiffness, "N/m");
+  s.c = e.has("damping") ? read_vector3(e.at("damping"), 0.0, kMaxDamping, "N s/m") : Eigen::Vector3d::Zero();
   m.springs.push_back(s);
 }
 
@@ -80,7 +80,10 @@ void read_bump_stop(const InputNode& e, const std::string& name, double side_sig
   for (const auto& row : e.at("table").elements()) {
     const auto v = row.as_numbers();
     if (v.size() != 2) row.fail("expected [deflection, force]");
-    if (v[0] < 0 || v[1] < 0) row.fail("deflection and force must be non-negative");
+    if (!(v[0] >= 0 && v[0] <= kMaxStopDeflection && v[1] >= 0 && v[1] <= kMaxStopForce))
+      row.fail("expected a deflection in [0, " + config::format_number(kMaxStopDeflection) + "] m and a force in [0, " +
+               config::format_number(kMaxStopForce) + "] N (got [" + config::format_number(v[0]) + ", " +
+               config::format_number(v[1]) + "])");
     if (!s.deflection.empty() && v[0] <= s.deflection.back()) row.fail("deflections must increase");
     s.deflection.push_back(v[0]);
     s.force.push_back(v[1]);
@@ -93,8 +96,8 @@ void read_bump_stop(const InputNode& e, const std::string& name, double side_sig
 void read_yaw_damper(const InputNode& e, const std::string& name, double side_sign, Model& m) {
   e.allow_only({"type", "name", "body", "other", "at", "other_at", "series_stiffness", "damping", "sides"});
   auto y = attached<YawDamper>(e, name, side_sign, m);
-  y.series_stiffness = e.positive("series_stiffness");
-  y.damping = e.positive("damping");
+  y.series_stiffness = e.in_range("series_stiffness", 0.0, kMaxStiffness, true);  // [N/m]
+  y.damping = e.in_range("damping", 0.0, kMaxDamping, true);                      // [N s/m]
   m.yaw_dampers.push_back(y);
 }
 
@@ -103,7 +106,7 @@ void read_anti_roll_bar(const InputNode& e, const std::string& name, double, Mod
   AntiRollBar a;
   a.name = name;
   std::tie(a.body_a, a.body_b) = ends(e, m);
-  a.stiffness = e.non_negative("stiffness");
+  a.stiffness = e.in_range("stiffness", 0.0, kMaxRollStiffness);  // [N m/rad]
   m.anti_roll_bars.push_back(a);
 }
 
@@ -119,11 +122,13 @@ bool element_name_taken(const Model& m, const std::string& name) {
 
 }  // namespace
 
-Eigen::Vector3d read_vector3(const InputNode& n, bool non_negative) {
+Eigen::Vector3d read_vector3(const InputNode& n, double lo, double hi, const char* unit) {
   const auto v = n.as_numbers();
   if (v.size() != 3) n.fail("expected a list of 3 numbers (got " + std::to_string(v.size()) + ")");
   for (double x : v)
-    if (non_negative && x < 0) n.fail("expected non-negative numbers (got " + config::format_number(x) + ")");
+    if (!(x >= lo && x <= hi))
+      n.fail("expected numbers in [" + config::format_number(lo) + ", " + config::format_number(hi) + "] " + unit +
+             " (got " + config::format_number(x) + ")");
   return {v[0], v[1], v[2]};
 }
 

@@ -36,7 +36,19 @@ std::string element_kind_names();
 // Reads one element of a vehicle file (unique name over all kinds, known
 // kind, two different bodies) and appends it to `model`.
 void read_element(const config::InputNode& node, Model& model, double side_sign, const std::string& suffix);
-// A list of 3 finite numbers (optionally non-negative): positions, inertias, stiffnesses.
-Eigen::Vector3d read_vector3(const config::InputNode& node, bool non_negative);
+// A list of 3 finite numbers, each in [lo, hi] (unit for the message):
+// positions, inertias, stiffnesses.
+Eigen::Vector3d read_vector3(const config::InputNode& node, double lo, double hi, const char* unit);
+
+// Plausible ranges of a vehicle file's values (with decades to spare around
+// rail vehicles): points and body positions [m] from the vehicle's centre,
+// spring stiffness [N/m], damping [N s/m], anti-roll-bar stiffness [N m/rad],
+// bump-stop deflection [m] and force [N].
+inline constexpr double kMaxVehicleCoordinate = 50.0;
+inline constexpr double kMaxStiffness = 1e10;
+inline constexpr double kMaxDamping = 1e8;
+inline constexpr double kMaxRollStiffness = 1e9;
+inline constexpr double kMaxStopDeflection = 1.0;
+inline constexpr double kMaxStopForce = 1e8;
 
 }  // namespace railsim::engine

@@ -1,6 +1,9 @@
 // Vehicle YAML reader; see vehicle_file.hpp.
 #include "engine/io/vehicle_file.hpp"
 
+#include <cmath>
+#include <limits>
+
 #include "core/errors.hpp"
 #include "engine/elements/element_registry.hpp"
 
@@ -19,7 +22,7 @@ void load_vehicle(const InputNode& root, Model& m) {
     if (body.name == "track") b.at("name").fail("'track' is reserved for the track-following frame");
     if (m.body_index(body.name) >= 0) b.at("name").fail("duplicate body name '" + body.name + "'");
     body.mass = b.in_range("mass", kMinBodyMass, kMaxBodyMass);
-    body.inertia = read_vector3(b.at("inertia"), true);
+    body.inertia = read_vector3(b.at("inertia"), 0.0, std::numeric_limits<double>::max(), "kg m^2");  // range below
     for (int k = 0; k < 3; ++k)
       if (!(body.inertia[k] >= kMinBodyInertia && body.inertia[k] <= kMaxBodyInertia))
         b.at("inertia").fail("inertias must lie in [" + config::format_number(kMinBodyInertia) + ", " +
@@ -35,10 +38,25 @@ void load_vehicle(const InputNode& root, Model& m) {
                              " < " + axis[k] + " = " + config::format_number(i));
       }
     }
-    body.position = read_vector3(b.at("position"), false);
+    body.position = read_vector3(b.at("position"), -kMaxVehicleCoordinate, kMaxVehicleCoordinate, "m");
     const std::string type = b.string("type");
     if (type == "wheelset") {
       if (b.has("dofs")) b.at("dofs").fail("a wheelset's DOFs follow from the wheelset model (lateral or full)");
+      // A wheelset runs centred on its track frame at its wheels' height; a
+      // lateral offset or an odd height was ignored silently.
+      if (body.position.y() != 0.0)
+        b.at("position").fail("a wheelset's y must be 0 (it runs centred on its track frame; initial deviations "
+                              "are the scenario's key 'initial'), got " + config::format_number(body.position.y()));
+      if (!(body.position.z() >= 0.1 && body.position.z() <= 1.5))
+        b.at("position").fail("a wheelset's z is its axle height, the wheel radius: expected [0.1, 1.5] m, got " +
+                              config::format_number(body.position.z()));
+      for (const auto& other : m.wheelsets) {
+        const RigidBody& ob = m.bodies[std::size_t(other.body)];
+        if (std::abs(ob.position.x() - body.position.x()) < 0.5)
+          b.at("position").fail("wheelset '" + body.name + "' at x = " + config::format_number(body.position.x()) +
+                                " m lies within 0.5 m of wheelset '" + ob.name + "' (x = " +
+                                config::format_number(ob.position.x()) + " m)");
+      }
       body.active = {true, false, false, false, true};
       body.wheelset = static_cast<int>(m.wheelsets.size());
       Wheelset w;
@@ -55,6 +73,7 @@ void load_vehicle(const InputNode& root, Model& m) {
           for (int j = 0; j < kNumDof; ++j)
             if (s == dof_name(j)) k = j;
           if (k < 0) n.fail("unknown DOF '" + s + "' (known: lateral, vertical, roll, pitch, yaw)");
+          if (body.active[k]) n.fail("DOF '" + s + "' given twice");
           body.active[k] = true;
         }
       }

@@ -125,6 +125,16 @@ TEST_CASE("bad vehicles: refused naming file, line, key and the allowed range", 
           {"vehicle_inertia_triangle.yaml",
            {":4: key 'bodies[0].inertia'", "triangle inequality", "Ixx + Iyy = 212 < Izz = 1120"}},
           {"vehicle_duplicate_key.yaml", {":4: key 'bodies[0].mass'", "given twice (first on line 4)"}},
+          // Values beyond any rail vehicle (they ran to a solver failure, exit 3, or were accepted).
+          {"vehicle_spring_huge.yaml",
+           {":7: key 'elements[0].stiffness'", "expected numbers in [0, 10000000000] N/m", "got 1e+300"}},
+          {"vehicle_point_far.yaml", {":6: key 'elements[0].at'", "expected numbers in [-50, 50] m", "got 1000000000"}},
+          {"vehicle_wheelset_offset.yaml", {":4: key 'bodies[0].position'", "a wheelset's y must be 0", "got 0.5"}},
+          {"vehicle_wheelsets_same_x.yaml",
+           {":5: key 'bodies[1].position'", "wheelset 'ws2' at x = 0.2 m lies within 0.5 m of wheelset 'ws1'"}},
+          {"vehicle_dofs_twice.yaml", {":5: key 'bodies[1].dofs[1]'", "DOF 'lateral' given twice"}},
+          {"vehicle_bump_stop_huge.yaml",
+           {":9: key 'elements[1].table[1]'", "a force in [0, 100000000] N", "got [0.02, 1e+300]"}},
       },
       [](const std::string& path) {
         engine::Model m;
