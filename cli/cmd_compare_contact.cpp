@@ -57,6 +57,7 @@ struct CompareArgs {
   std::string cases;
   std::string out;
   std::string models;
+  bool models_given = false;  // --models on the command line (an empty list is an error, not the default)
   std::string reduction;
   std::string cache_dir;
   std::string map_case;
@@ -112,6 +113,9 @@ std::shared_ptr<const contact::MimTable> find_mim_table(const std::string& cache
 
 std::vector<Candidate> make_candidates(const CompareArgs& a) {
   std::vector<std::string> names = split_names(a.models);
+  if (a.models_given && names.empty())
+    throw InputError("--models '" + a.models + "': no model named (give a comma-separated list, or omit --models for "
+                     "every registered model)");
   const bool explicit_list = !names.empty();
   if (!explicit_list)
     for (const auto& e : contact::tangential_models())
@@ -364,7 +368,10 @@ void register_compare_contact(CLI::App& app, CommandRunner& run) {
                 "Include mim_table, building its table when it is not cached (56,277 MIM solves)");
   cmd->add_option("--cache-dir", a->cache_dir,
                   "mim_table cache folder (default $RAILSIM_CACHE_DIR, $XDG_CACHE_HOME/railsim or ~/.cache/railsim)");
-  cmd->callback([a, &run] { run = [a] { return run_compare_contact(*a); }; });
+  cmd->callback([a, cmd, &run] {
+    a->models_given = cmd->count("--models") > 0;
+    run = [a] { return run_compare_contact(*a); };
+  });
 }
 
 }  // namespace railsim::cli
