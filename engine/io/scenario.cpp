@@ -403,7 +403,18 @@ void read_start_state(const InputNode& root, Scenario& sc) {
   const Model& m = sc.model;
   sc.x0 = Eigen::VectorXd::Zero(m.n_states);
   if (root.choice_or("start", "equilibrium", {"equilibrium", "nominal"}) == "equilibrium") {
-    const EquilibriumResult eq = static_equilibrium(m, 0.0);
+    EquilibriumResult eq;
+    try {
+      eq = static_equilibrium(m, 0.0);
+    } catch (const NumericalError& e) {
+      // The model fails at the nominal start state itself (every body on its
+      // track frame): the start lies outside the model's range (a wheelset
+      // beyond the geometry inside a large irregularity): bad input, not a
+      // numerical failure of the run, and no physics result.
+      const InputNode& at = root.has("start_distance") ? root.at("start_distance") : root;
+      at.fail("the start state (every body centred on its track frame) is outside the model's range there, so no "
+              "run can start: " + std::string(e.what()) + "; start elsewhere on the track");
+    }
     if (eq.converged) {
       sc.x0 = eq.x;
     } else {  // said in the run's summary.json (warnings) and the log

@@ -21,6 +21,7 @@
 #include <string>
 
 #include "config/yaml_input.hpp"
+#include "core/errors.hpp"
 #include "engine/data.hpp"
 #include "engine/io/scenario.hpp"
 #include "engine/simulation.hpp"
@@ -231,4 +232,31 @@ TEST_CASE("no equilibrium for a lone wheelset: the held stage has no unknowns an
     said = said || (w.find("no (quasi-)static equilibrium") != std::string::npos &&
                     w.find("with the wheelsets held") == std::string::npos);
   CHECK(said);
+}
+
+TEST_CASE("a start outside the model's range is bad input naming start_distance, not a numerical failure",
+          "[engine][equilibrium][robustness]") {
+  // The Cooperrider car (full model, RSGEO table, +-17 mm) starting inside a
+  // 20 mm lateral alignment defect: centred on their track frames the
+  // wheelsets lie 19 mm from the rails, beyond the table. The model fails at
+  // the start state itself; that was a "numerical failure" (exit 3) whose
+  // text read as a derailment.
+  std::string text = test::read_text(test::source_path("scenarios/cooperrider_car.yaml"));
+  const auto tr = text.find("track: ../tracks/straight_lateral_defect.yaml");
+  REQUIRE(tr != std::string::npos);
+  text.replace(tr, 45,
+               "track: {segments: [{type: straight, length: 400}], irregularities: [{type: defect, channel: lateral, "
+               "start: 80, wavelength: 20, amplitude_mm: 20}]}");
+  const auto sd = text.find("start_distance: 40");
+  REQUIRE(sd != std::string::npos);
+  text.replace(sd, 18, "start_distance: 85");
+  try {
+    engine::load_scenario(config::InputNode::load_string(text, "car_in_defect.yaml"), test::source_path("scenarios"));
+    FAIL("no error");
+  } catch (const InputError& e) {
+    const std::string msg = e.what();
+    INFO(msg);
+    CHECK(msg.find("car_in_defect.yaml:12: key 'start_distance': the start state") != std::string::npos);
+    CHECK(msg.find("outside the model's range") != std::string::npos);
+  }
 }
