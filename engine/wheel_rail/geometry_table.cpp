@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "config/yaml_input.hpp"
 #include "core/errors.hpp"
 #include "core/input_file.hpp"
 
@@ -59,6 +60,7 @@ GeometryTable::GeometryTable(const std::string& path, const GeometryTableOptions
   std::string line;
   int lineno = 0, block_line = 0;
   std::vector<std::vector<double>> cols(12);
+  std::vector<int> row_line;  // file line of each row of the block (messages)
   bool header_seen = false;
   auto finish_block = [&]() {
     const std::size_t n = cols[0].size();
@@ -70,8 +72,11 @@ GeometryTable::GeometryTable(const std::string& path, const GeometryTableOptions
     if (!(h > 0)) throw InputError(where + ": shift column must increase");
     for (std::size_t i = 1; i < n; ++i)
       if (std::abs(cols[0][i] - cols[0][i - 1] - h) > 0.05 * h)
-        throw InputError(where + ": row " + std::to_string(i + 1) + " of the block: shift grid is not uniform "
-                         "(rows must be sorted by shift with a constant step)");
+        throw InputError(path + ":" + std::to_string(row_line[i]) + ": row " + std::to_string(i + 1) +
+                         " of the block (starting on line " + std::to_string(block_line) + "): shift " +
+                         config::format_number(cols[0][i]) + " after " + config::format_number(cols[0][i - 1]) +
+                         ": the shift grid is not uniform (rows must be sorted by shift with a constant step, here " +
+                         config::format_number(h) + ")");
     std::vector<double> raw(n * kCols);
     for (std::size_t i = 0; i < n; ++i)
       for (int k = 0; k < kCols; ++k) raw[i * kCols + std::size_t(k)] = cols[std::size_t(k + 1)][i];
@@ -90,6 +95,7 @@ GeometryTable::GeometryTable(const std::string& path, const GeometryTableOptions
     }
     blocks_.push_back(std::move(b));
     for (auto& c : cols) c.clear();
+    row_line.clear();
     header_seen = false;
   };
   while (std::getline(in, line)) {
@@ -118,6 +124,7 @@ GeometryTable::GeometryTable(const std::string& path, const GeometryTableOptions
                          kColumnNames[k] + "): expected a finite number");
       cols[std::size_t(k)].push_back(v[k]);
     }
+    row_line.push_back(lineno);
     check_row(path, lineno, v);
   }
   finish_block();

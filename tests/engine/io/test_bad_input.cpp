@@ -150,6 +150,9 @@ TEST_CASE("bad tracks, geometry tables and profiles name file, line and column o
           {"table_negative_c11.dat", {":5: column 8 (C11 [-])", "(0, 100]", "got -5"}},
           {"table_zero_a.dat", {":5: column 4 (a [m])", "expected a number in (0, 0.1]", "got 0"}},
           {"table_negative_n0.dat", {":5: column 2 (N0 [N])", "expected a number in (0, 1e+07]", "got -60000"}},
+          // Rows out of order: the line of the row (it named the block's first line).
+          {"table_unsorted.dat",
+           {":13: row 11 of the block (starting on line 1): shift -0.00039 after -0.00041", "not uniform"}},
       },
       [](const std::string& path) { engine::GeometryTable t(path); });
   check_cases({{"profile_mm_declared_m.csv",
