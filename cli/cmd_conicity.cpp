@@ -70,10 +70,10 @@ void register_conicity(CLI::App& app, CommandRunner& run) {
       }
       const GeometrySetup g = make_geometry(*o);
       const contact::ContactTable t = make_table(*o, g);
-      double c[6];
+      double conicity[6];
       for (int a = 1; a <= 6; ++a) {
         try {
-          c[a - 1] = contact::equivalent_conicity(t, a * 1e-3);
+          conicity[a - 1] = contact::equivalent_conicity(t, a * 1e-3);
         } catch (const InputError& e) {
           throw InputError(std::string(std::string(e.what()).find("y step") != std::string::npos ? "--y-step"
                                                                                                   : "--y-min/--y-max") +
@@ -81,7 +81,7 @@ void register_conicity(CLI::App& app, CommandRunner& run) {
         }
       }
       std::printf("amplitude_mm,equivalent_conicity\n");
-      for (int a = 1; a <= 6; ++a) std::printf("%d,%.5f\n", a, c[a - 1]);
+      for (int a = 1; a <= 6; ++a) std::printf("%d,%.5f\n", a, conicity[a - 1]);
       if (!out->empty()) {
         const auto c = contact::rolling_radius_difference(t);
         results::CsvWriter w(*out, {"y", "delta_r"}, false, 0, 10);

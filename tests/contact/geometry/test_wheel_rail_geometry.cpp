@@ -172,7 +172,7 @@ TEST_CASE("Rail inclination texts: 1/N, a slope or none; anything else named", "
   CHECK(parse_inclination("0", "--inclination") == 0.0);
   // Non-finite parts (1/inf read as slope 0), a NUL inside the text (read up to it), empty parts, steep or
   // negative slopes.
-  for (const std::string bad : {std::string("1/inf"), std::string("1/1e400"), std::string("inf"), std::string("nan"),
+  for (const std::string& bad : {std::string("1/inf"), std::string("1/1e400"), std::string("inf"), std::string("nan"),
                                 std::string("1/0"), std::string("-1/40"), std::string("1/40x"),
                                 std::string("1/40\0x", 6), std::string(""), std::string("/40"), std::string("1/"),
                                 std::string("1/2")}) {
