@@ -114,8 +114,8 @@ std::string verdict_text(const engine::CriticalSpeedOutcome& o) {
 // Exit code of analyses whose verdict may be missing: a bifurcation sweep
 // whose hunting range could not be followed (engine BifurcationResult::
 // undetermined) gives no critical speed; the reason goes to stderr, and the
-// exit is 3 for a numerical failure, 2 for runs too short (a setting to raise),
-// never 0. `what` names the analysis (model, reduction entry).
+// exit is 3 for a numerical failure, 2 for runs too short or a sweep whose
+// lowest speed still hunts (a setting to change), never 0. `what` names the analysis (model, reduction entry).
 int verdict_exit(const engine::BifurcationResult& b, const std::string& what, int so_far = kExitSuccess) {
   using U = engine::BifurcationResult::Undetermined;
   if (b.undetermined_kind == U::none) return so_far;

@@ -497,6 +497,17 @@ BifurcationResult collect(const std::vector<SweepResult>& rows, const Bifurcatio
     res.nonlinear_critical_speed = (*it)->speed;
     res.fold_amplitude = (*it)->amplitude;
     res.fold_frequency = (*it)->frequency;
+    if (std::next(it) == down.rend()) {
+      // Hunting down to the lowest speed swept: the fold is not in the range.
+      char buf[300];
+      std::snprintf(buf, sizeof buf,
+                    "the down branch still hunts at the lowest speed of the sweep, %.1f km/h: the critical speed lies "
+                    "at or below it; lower the sweep's lowest speed (--v-min)",
+                    (*it)->speed * 3.6);
+      res.undetermined = buf;
+      res.undetermined_kind = BifurcationResult::Undetermined::below_range;
+      res.nonlinear_critical_speed = res.fold_amplitude = res.fold_frequency = kNaN;
+    }
   }
   return res;
 }

@@ -90,9 +90,11 @@ struct BifurcationResult {
   // stands): walking down from the top of the sweep, a point stopped by a
   // numerical failure, or a point whose run was too short to show a cycle in
   // its tail (amplitude above the threshold, fewer than two half-cycles), came
-  // before the hunting range ended. `undetermined_kind` says which.
+  // before the hunting range ended; or the down branch still hunts at the
+  // lowest speed of the sweep (the critical speed lies at or below v_min: the
+  // range must reach lower). `undetermined_kind` says which.
   std::string undetermined;
-  enum class Undetermined { none, numerical_failure, too_short } undetermined_kind = Undetermined::none;
+  enum class Undetermined { none, numerical_failure, too_short, below_range } undetermined_kind = Undetermined::none;
 };
 
 // Hunting: the run derailed, or a settled amplitude above the threshold that is

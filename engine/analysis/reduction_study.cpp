@@ -276,10 +276,10 @@ ReductionStudyResult reduction_study(const Scenario& base, const ReductionStudyO
       const std::size_t i = static_cast<std::size_t>(p.index);
       const auto te = std::chrono::steady_clock::now();
       RampingResult r;
-      double stopped = 0.0;  // 0 ran to the end, 1 numerical failure, 2 derailed or left the model's range
+      double stopped = 0.0;  // 0 ran to the end, 1 numerical failure, 2 derailed, 3 left the model's range
       try {
         r = ramping(res.entries[i].scenario, o.ramping);
-        if (r.stopped()) stopped = 2.0;
+        if (r.stopped()) stopped = r.derailment.empty() ? 3.0 : 2.0;
       } catch (const NumericalError& err) {
         spdlog::error("reductions: {}: ramp stopped on a numerical failure ({}); no verdict", res.entries[i].label,
                       err.what());
@@ -302,7 +302,9 @@ ReductionStudyResult reduction_study(const Scenario& base, const ReductionStudyO
       r.critical_amplitude = row.values[4];
       r.start_speed = row.values[5];
       e.ramp_failed = row.values[6] > 0.5 && row.values[6] < 1.5;
-      e.ramp_stop = e.ramp_failed             ? "the ramp stopped on a numerical failure (see the log): no verdict"
+      e.ramp_stop = e.ramp_failed           ? "the ramp stopped on a numerical failure (see the log): no verdict"
+                    : row.values[6] > 2.5 ? "the ramp's grown motion left the model's range (e.g. a wheel lifting "
+                                            "in the lateral model; see the log): no critical speed"
                     : row.values[6] > 1.5 ? "the vehicle derailed during the ramp: no critical speed"
                                           : "";
       read_ramp_record(o.out_dir + "/" + e.folder + "/ramping_record.csv", r);

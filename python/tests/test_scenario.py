@@ -123,6 +123,14 @@ def test_critical_speed_matches_the_program(cli, tmp_path):
             assert r["settings"]["start_speed_kmh"] == pytest.approx(180.0)
 
 
+def test_critical_speed_below_the_range_is_no_verdict():
+    # Hunting already at the lowest speed swept (linear critical speed 176.5 km/h): a bound, not a critical speed.
+    sc = railsim.load_scenario(SINGLE)
+    r = railsim.critical_speed(sc, v_min_kmh=190, v_max_kmh=200, v_step_kmh=10, duration=3.0)
+    assert r["critical_speed_kmh"] is None
+    assert "still hunts at the lowest speed of the sweep, 190.0 km/h" in r["undetermined"]
+
+
 def test_critical_speed_says_when_there_is_no_verdict(cli, tmp_path):
     # 1 s per point: the last 30 % hold no cycle. The library says why there is no critical speed
     # (undetermined, each point's state too_short), the program exits 2 with the same reason.

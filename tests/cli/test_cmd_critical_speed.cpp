@@ -362,6 +362,18 @@ TEST_CASE("railsim critical-speed: a sweep whose runs fail numerically or are to
   s = railsim::test::read_json(dir + "/short/summary.json");
   CHECK(std::isnan(json_number(s, "critical_speed_kmh")));
   CHECK(s["undetermined"].get<std::string>().find("too short") != std::string::npos);
+  // A sweep whose lowest speed still hunts (the shipped single wheelset, linear critical speed 176.5 km/h,
+  // swept from 190 km/h): the fold is below the range. It reported 190 km/h, exit 0. Now exit 2, no
+  // critical speed, the bound and --v-min named.
+  r = run_railsim("critical-speed '" + railsim::test::source_path("scenarios/single_wheelset.yaml") +
+                  "' --v-min 190 --v-max 200 --v-step 10 --duration 3 --threads 2 --out '" + dir + "/above'");
+  INFO(r.output);
+  CHECK(r.exit_code == 2);
+  CHECK(r.output.find("still hunts at the lowest speed of the sweep, 190.0 km/h: the critical speed lies at or "
+                      "below it") != std::string::npos);
+  s = railsim::test::read_json(dir + "/above/summary.json");
+  CHECK(std::isnan(json_number(s, "critical_speed_kmh")));
+  CHECK(s["undetermined"].get<std::string>().find("--v-min") != std::string::npos);
 }
 
 TEST_CASE("railsim critical-speed: runs that lift a wheel after their motion grew count as hunting",
@@ -404,6 +416,19 @@ TEST_CASE("railsim critical-speed --method ramping: a ramp whose grown motion le
   CHECK(std::string(s["left_model_range"]).find("loss of contact") != std::string::npos);
   CHECK_FALSE(s.contains("derailment"));
   // (A ramp stopped by the integrator stays a numerical failure, exit 3: the forced blow-up test above.)
+  // The same stop in a --reductions study is named as such (it said "the vehicle derailed during the ramp").
+  const auto rr = run_railsim("critical-speed '" + railsim::test::source_path("scenarios/single_wheelset.yaml") +
+                              "' --method ramping --v-min 160 --v-max 200 --reductions 1,0.5 --threads 2 --out '" +
+                              dir + "/reductions'");
+  INFO(rr.output);
+  REQUIRE(rr.exit_code == 0);
+  const auto st = railsim::test::read_json(dir + "/reductions/summary.json");
+  REQUIRE(st["entries"].size() == 2);
+  for (const auto& e : st["entries"]) {
+    const std::string stopped = e["stopped"];
+    CHECK(stopped.find("left the model's range") != std::string::npos);
+    CHECK(stopped.find("derailed") == std::string::npos);
+  }
 }
 
 TEST_CASE("railsim critical-speed: a folder swept with other settings is refused, not resumed",
