@@ -30,6 +30,18 @@ struct CompareYqArgs {
 };
 
 int run_compare_yq(const CompareYqArgs& a) {
+  // The comparison's summary.json would replace a run's own (its verdict).
+  const auto folder = [](const std::string& p, std::error_code& ec) {
+    std::filesystem::path c = std::filesystem::weakly_canonical(p, ec);
+    return c.has_filename() ? c : c.parent_path();  // "run/" and "run" are one folder
+  };
+  for (const auto& run : a.runs) {
+    std::error_code e1, e2;
+    const auto o = folder(a.out, e1), r = folder(run, e2);
+    if (!e1 && !e2 && o == r)
+      throw InputError("--out " + a.out + ": is the run folder " + run +
+                       " being compared; writing there would replace the run's summary.json: give another folder");
+  }
   std::error_code ec;
   std::filesystem::create_directories(a.out, ec);
   if (ec) throw InputError("--out " + a.out + ": cannot create the folder (" + ec.message() + ")");

@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <cstring>
 #include <iostream>
+#include <string>
 
 #include "cli/commands.hpp"
 #include "cli/support_option_checks.hpp"
@@ -70,6 +71,12 @@ int main(int argc, char** argv) {
     return code == 0 ? railsim::kExitSuccess : railsim::kExitBadInput;
   }
 
+  // The message that ends a run reaches stderr at any --log-level (off and
+  // critical hid it: exit 2 or 3 without a word).
+  const auto fatal = [](spdlog::level::level_enum level, const std::string& msg) {
+    if (spdlog::default_logger_raw()->should_log(level)) spdlog::log(level, "{}", msg);
+    else std::fprintf(stderr, "railsim: %s\n", msg.c_str());
+  };
   auto logger = spdlog::stderr_color_mt("railsim");
   spdlog::set_default_logger(logger);
   spdlog::set_level(spdlog::level::from_str(log_level));
@@ -84,13 +91,13 @@ int main(int argc, char** argv) {
       throw railsim::InputError(std::string("standard output: write failed (") + std::strerror(errno) + ")");
     return code;
   } catch (const railsim::InputError& e) {
-    spdlog::error("{}", e.what());
+    fatal(spdlog::level::err, e.what());
     return railsim::kExitBadInput;
   } catch (const railsim::NumericalError& e) {
-    spdlog::error("numerical failure: {}", e.what());
+    fatal(spdlog::level::err, std::string("numerical failure: ") + e.what());
     return railsim::kExitNumericalFailure;
   } catch (const std::exception& e) {
-    spdlog::critical("internal error: {}", e.what());
+    fatal(spdlog::level::critical, std::string("internal error: ") + e.what());
     return 1;
   }
 }

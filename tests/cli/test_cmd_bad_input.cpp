@@ -251,6 +251,8 @@ TEST_CASE("railsim on bad options: exit 2 naming the option and the range", "[cl
       // a shift step too coarse for the regression (12 mm gave 0 at every amplitude).
       {"a +-0.5 mm table on conicity", "conicity --table " + bad("table_narrow.dat"),
        {"table_narrow.dat: the table covers shifts up to +-0.5 mm: no amplitude of 1..6 mm fits"}},
+      {"compare-yq into a compared run's folder", "compare-yq " + sc + " '" + dir + "/run_a' --out '" + dir + "/run_a/'",
+       {"--out " + dir + "/run_a/: is the run folder " + dir + "/run_a being compared"}},
       {"--gauge with --table", "conicity --table " + bad("table_narrow.dat") + " --gauge 99",
        {"--gauge: does not apply with --table"}},
       {"--y-step 0.012 on conicity", "conicity --y-step 0.012 --no-cache",
@@ -344,4 +346,14 @@ TEST_CASE("two railsim processes on one output folder: the second exits 2 naming
                  {out + ": another railsim process (pid " + std::to_string(a.pid) + ") is writing"}}});
   REQUIRE(a.wait(kBoundSeconds) == 0);
   CHECK(test::read_text(out + "/channels.csv") == test::read_text(dir + "/alone/channels.csv"));
+}
+
+TEST_CASE("the message that ends a run reaches stderr at every --log-level", "[cli][bad_input]") {
+  // --log-level off and critical hid it: exit 2 (or 3) without a word.
+  for (const char* level : {"off", "critical", "info"}) {
+    const auto r = test::run_railsim(std::string("--log-level ") + level + " run /nonexistent/scenario.yaml");
+    INFO(level << ": " << r.output);
+    CHECK(r.exit_code == 2);
+    CHECK(r.output.find("/nonexistent/scenario.yaml: YAML input not found") != std::string::npos);
+  }
 }
