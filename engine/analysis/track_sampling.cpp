@@ -6,7 +6,11 @@
 
 namespace railsim::engine {
 
-double track_sample_count(double from, double to, double step) { return std::floor((to - from) / step + 1e-9) + 1.0; }
+double track_sample_count(double from, double to, double step) {
+  const double whole = std::floor((to - from) / step + 1e-9);  // steps inside [from, to]
+  // Plus the end itself when the step does not divide the range (it was dropped).
+  return whole + 1.0 + (from + whole * step < to - 1e-9 * step ? 1.0 : 0.0);
+}
 
 TrackSamplingStats sample_track(const track::Track& track, double from, double to, double step,
                                 std::optional<double> speed, const std::function<void(const TrackSample&)>& sample) {

@@ -26,7 +26,8 @@ struct TrackSamplingStats {
   std::array<double, track::kChannelCount> rms{};      // [m]
 };
 
-// Number of samples over [from, to] every `step` (floor((to - from) / step + 1e-9) + 1).
+// Number of samples over [from, to] every `step`, the end included (one more
+// when the step does not divide the range: the last sample is `to`).
 double track_sample_count(double from, double to, double step);
 
 // speed [m/s]: for the cant deficiency (none: NaN in every sample).

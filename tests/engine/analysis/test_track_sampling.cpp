@@ -33,10 +33,13 @@ TEST_CASE("track sampling: peak and RMS of a cosine defect, sample positions", "
   CHECK(st.rms[lat] == Approx(std::sqrt(3.0 * A * A * lambda / (8.0 * L))).epsilon(1e-3));
   const auto ver = static_cast<std::size_t>(track::index(track::Channel::vertical));
   CHECK(st.max_abs[ver] == 0.0);
-  // A step that does not divide the range: the samples stop at the last step inside it.
+  // A step that does not divide the range: every step inside it, then the end itself (it was dropped, while
+  // `railsim track` said it sampled up to the end).
   std::vector<double> t;
   engine::sample_track(track, 0.0, 1.0, 0.3, 30.0, [&](const engine::TrackSample& p) { t.push_back(p.s); });
-  CHECK(t.size() == 4);
-  CHECK(t.back() == Approx(0.9));
+  REQUIRE(t.size() == 5);
+  CHECK(t[3] == Approx(0.9));
+  CHECK(t.back() == 1.0);
   CHECK(engine::track_sample_count(0.0, 1.0, 0.25) == 5.0);
+  CHECK(engine::track_sample_count(0.0, 270.0, 100.0) == 4.0);  // 0, 100, 200, 270
 }
