@@ -7,7 +7,7 @@ changed, and railsim.critical_speed run on the down branch for each value.
     PYTHONPATH=build/release/python /usr/bin/python3 examples/friction_sweep.py --mu 0.2,0.3,0.4
 
 Defaults sweep 200..350 km/h in 10 km/h steps (a few minutes on two cores);
-the tests run a short version (--v-min 270 --v-max 300 --v-step 30 --mu 0.15,0.4).
+the tests run a short version (--v-min 240 --v-max 300 --v-step 30 --mu 0.15,0.4).
 Prints a table and writes friction_sweep.csv (and .png unless --no-plot).
 """
 import argparse

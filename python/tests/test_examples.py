@@ -26,7 +26,7 @@ def test_creep_force_curves_example(tmp_path):
 
 
 def test_friction_sweep_example(tmp_path):
-    out = _run("friction_sweep.py", "--mu", "0.15,0.4", "--v-min", "270", "--v-max", "300", "--v-step", "30",
+    out = _run("friction_sweep.py", "--mu", "0.15,0.4", "--v-min", "240", "--v-max", "300", "--v-step", "30",
                "--duration", "3", "--out", str(tmp_path), cwd=tmp_path)
     with open(tmp_path / "friction_sweep.csv") as f:
         rows = list(csv.DictReader(f))
