@@ -316,6 +316,12 @@ int run_critical_speed(const CriticalSpeedArgs& a) {
     std::stringstream ss(a.models);
     for (std::string n; std::getline(ss, n, ',');)
       if (!n.empty()) names.push_back(n);
+    if (names.empty()) throw InputError("--models '" + a.models + "': no model named");
+    for (std::size_t i = 0; i < names.size(); ++i)
+      for (std::size_t j = 0; j < i; ++j)
+        if (names[i] == names[j])
+          throw InputError("--models: model '" + names[i] + "' listed twice (each model's results go to its own "
+                           "folder)");
     for (const auto& n : names) {
       tangential_model_option("--models", n);
       try {

@@ -200,6 +200,16 @@ std::vector<ReductionSpec> parse_reduction_list(std::string_view text, const std
     out.push_back(parse_reduction_spec(entries[i], where + " entry " + std::to_string(i + 1)));
   }
   if (out.empty()) throw InputError(where + ": no entries (expected a list such as 1,0.8,0.6,elastic_fe)");
+  // An entry twice would run twice (into one folder): the same factors, or the same text.
+  for (std::size_t i = 0; i < out.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j) {
+      const bool same_factors = out[i].resolved && out[j].resolved && out[i].form == out[j].form &&
+                                out[i].form != ReductionForm::layer && out[i].k.k11 == out[j].k.k11 &&
+                                out[i].k.k22 == out[j].k.k22 && out[i].k.k23 == out[j].k.k23;
+      if (same_factors || out[i].text == out[j].text)
+        throw InputError(where + ": entry " + std::to_string(i + 1) + " ('" + out[i].text + "') repeats entry " +
+                         std::to_string(j + 1) + " ('" + out[j].text + "')");
+    }
   return out;
 }
 

@@ -225,6 +225,8 @@ TEST_CASE("railsim on bad options: exit 2 naming the option and the range", "[cl
        {"--v-min/--v-max: need 0 < v-min < v-max <= 720 km/h (got -10, 400)"}},
       {"--threads 1000", "critical-speed " + sc + " --threads 1000 --out '" + dir + "/c'",
        {"--threads: Value 1000 not in range 0 to 256"}},
+      {"--models twice", "critical-speed " + sc + " --compare-models --models she,chopaya,she --out '" + dir + "/c'",
+       {"--models: model 'she' listed twice"}},
       {"--reduction 5", "critical-speed " + sc + " --reduction 5 --out '" + dir + "/c'",
        {"--reduction: k11 expected a number in (0, 1.5] (got 5)"}},
       {"--contact-audit 1e8", "run " + sc + " --contact-audit 100000000 --out '" + dir + "/r'",
@@ -269,7 +271,7 @@ TEST_CASE("a second railsim writing the same output folder exits 2 naming the fo
     for (const std::string& cmd :
          {"modes " + sc + " --v-min 20 --v-max 30", "run " + sc + " --set duration=0.1", "critical-speed " + sc,
           std::string("demo"), "compare-contact '" + test::data_path("compare_contact_small.yaml") + "'",
-          "compare-yq " + sc + " '" + dir + "'"})
+          "compare-yq " + sc + " '" + dir + "_run'"})
       check_exit_2({{cmd, cmd + " --out '" + dir + "'",
                      {dir + ": another railsim process (pid " + std::to_string(::getpid()) + ") is writing"}}});
   }

@@ -80,6 +80,12 @@ TEST_CASE("reduction lists: commas, brackets, layers and semicolons", "[reductio
   CHECK_THROWS_WITH(parse_reduction_list("1,2", "--reductions"),
                     Catch::Contains("--reductions entry 2") && Catch::Contains("(0, 1.5]"));
   CHECK_THROWS_WITH(parse_reduction_list("1,soapy", "--reductions"), Catch::Contains("unknown reduction 'soapy'"));
+  // An entry twice (it ran twice into one folder): the same text, or the same factors written otherwise.
+  CHECK_THROWS_WITH(parse_reduction_list("1,1", "--reductions"),
+                    Catch::Contains("--reductions: entry 2 ('1') repeats entry 1 ('1')"));
+  CHECK_THROWS_WITH(parse_reduction_list("0.5,elastic_fe,0.50", "--reductions"),
+                    Catch::Contains("entry 3 ('0.50') repeats entry 1 ('0.5')"));
+  CHECK(parse_reduction_list("0.5,(0.5,0.5,0.5)", "--reductions").size() == 2);  // one number and a triple
   CHECK_THROWS_AS(parse_reduction_list("", "--reductions"), railsim::InputError);
 }
 
