@@ -907,7 +907,17 @@ ScenarioRunResult run_scenario(const Scenario& sc, const ScenarioRunOptions& o) 
   et.set("evaluation_share_of_run_cpu", rs.cpu_time > 0 ? ev.cpu_seconds / rs.cpu_time : 0.0);
   et.set("charts_wall_time", ev.chart_seconds);
   summary.set("post_processing", et);
-  if (audit) audit_run(sc, contacts, o, out);
+  if (audit) {
+    // The run's summary first (its verdict stands whatever becomes of the
+    // audit, which may take minutes): an interrupted audit leaves it, marked.
+    if (files) {
+      results::Json pending = results::Json::object();
+      pending.set("status", "running (interrupted if this remains: the run's results above stand)");
+      summary.set("contact_audit", pending);
+      summary.write_file(o.out_dir + "/summary.json");
+    }
+    audit_run(sc, contacts, o, out);
+  }
   if (files) summary.write_file(o.out_dir + "/summary.json");
   spdlog::info("done: {:.3g} s simulated in {:.3g} s wall ({:.3g}x real time; {:.3g}x on CPU time), {} steps, {} rhs "
                "calls, max |y| relative to the rails {:.3g} mm (absolute {:.3g} mm)",
