@@ -5,10 +5,13 @@
 #include <array>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
 #include <sys/wait.h>
+#include <system_error>
+#include <vector>
 #include <unistd.h>
 
 namespace railsim::test {
@@ -61,11 +64,28 @@ inline RunResult run_railsim(const std::string& args) {
 }
 
 // A fresh temporary folder for one test's outputs.
+// The folders made by temp_dir in this process, removed when it exits (set
+// RAILSIM_KEEP_TEST_DIRS=1 to keep them for a look after a failure).
+inline std::vector<std::string>& temp_dirs_made() {
+  static std::vector<std::string> dirs;
+  return dirs;
+}
+
+inline void remove_temp_dirs() {
+  if (std::getenv("RAILSIM_KEEP_TEST_DIRS")) return;
+  for (const auto& d : temp_dirs_made()) {
+    std::error_code ec;
+    std::filesystem::remove_all(d, ec);
+  }
+}
+
 inline std::string temp_dir(const std::string& name) {
   const char* base = std::getenv("TMPDIR");
   std::string dir = std::string(base ? base : "/tmp") + "/railsim_test_" + name + "_" + std::to_string(::getpid());
   std::string cmd = "rm -rf '" + dir + "' && mkdir -p '" + dir + "'";
   if (std::system(cmd.c_str()) != 0) return "/tmp";
+  if (temp_dirs_made().empty()) std::atexit(remove_temp_dirs);
+  temp_dirs_made().push_back(dir);
   return dir;
 }
 
