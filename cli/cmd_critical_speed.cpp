@@ -27,10 +27,13 @@
 #include <filesystem>
 #include <optional>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "cli/commands.hpp"
 #include "cli/support_option_checks.hpp"
 #include "engine/analysis/sweep_limits.hpp"
+#include "config/yaml_input.hpp"
 #include "contact/reduction.hpp"
 #include "contact/registry.hpp"
 #include "core/errors.hpp"
@@ -53,6 +56,7 @@ namespace fs = std::filesystem;
 using results::Json;
 
 struct CriticalSpeedArgs {
+  std::vector<std::string> given;  // options given on the command line (for those that do not apply)
   std::string scenario;
   std::string method = "bifurcation";
   std::string out = "critical_speed";
@@ -286,6 +290,24 @@ int run_critical_speed(const CriticalSpeedArgs& a) {
   engine::Scenario base = engine::load_scenario(a.scenario);
   const engine::CriticalSpeedStudySettings s = study_settings(a, base.critical_speed);
   engine::check_speed_range(s.v_min * 3.6, s.v_max * 3.6, s.v_step * 3.6);
+  // Options that do not apply to this analysis were ignored silently.
+  const auto given = [&](const char* opt) { return std::find(a.given.begin(), a.given.end(), opt) != a.given.end(); };
+  const bool ramping = s.method == engine::CriticalSpeedMethod::ramping;
+  for (const char* opt : {"--v-step", "--duration", "--small-disturbance", "--no-up-branch", "--continuation",
+                          "--no-continuation"})
+    if (ramping && given(opt))
+      throw InputError(std::string(opt) + ": applies to the bifurcation sweep, not to ramping (which takes --v-min, "
+                                          "--v-max, --disturbance, --threshold and --deceleration)");
+  if (!ramping && given("--deceleration"))
+    throw InputError("--deceleration: applies to ramping (--method ramping), not to the bifurcation sweep");
+  if (given("--models") && !a.compare_models)
+    throw InputError("--models: applies with --compare-models (to choose one model: --model)");
+  if (given("--no-baseline") && a.reduction.empty())
+    throw InputError("--no-baseline: applies with --reduction (it skips the unreduced comparison run)");
+  if (!ramping && s.up_branch && !(s.large_disturbance > s.small_disturbance))
+    throw InputError("--disturbance/--small-disturbance: the down branch's disturbance (" +
+                     config::format_number(s.large_disturbance * 1e3) + " mm) must exceed the up branch's (" +
+                     config::format_number(s.small_disturbance * 1e3) + " mm)");
   if (!a.reduction.empty() && !a.reductions.empty())
     throw InputError("--reduction and --reductions: give one of them (--reductions runs every entry of its list)");
   if (!a.reductions.empty() && a.compare_models)
@@ -473,7 +495,12 @@ void register_critical_speed(CLI::App& app, CommandRunner& run) {
   cmd->add_option("--threads", a->threads, "Worker threads per process (0: all cores)")
       ->check(CLI::Range(0, engine::kMaxThreads))
       ->capture_default_str();
-  cmd->callback([a, &run] { run = [a] { return run_critical_speed(*a); }; });
+  cmd->callback([a, cmd, &run] {
+    for (const char* opt : {"--v-step", "--duration", "--small-disturbance", "--no-up-branch", "--continuation",
+                            "--no-continuation", "--deceleration", "--models", "--no-baseline"})
+      if (cmd->count(opt) > 0) a->given.emplace_back(opt);
+    run = [a] { return run_critical_speed(*a); };
+  });
 }
 
 }  // namespace railsim::cli
