@@ -226,6 +226,16 @@ def critical_speed(sc, method="bifurcation", *, model="", reduction="", v_min_km
     or runs too short left no verdict (None otherwise; the program exits 3 or
     2 there), ramping's `derailment` when the ramp derailed. The sweep keeps its points in out/bifurcation.csv (resumable);
     without out a temporary folder is used."""
+    sweep_only = dict(v_step_kmh=v_step_kmh, duration=duration, small_disturbance_mm=small_disturbance_mm,
+                      continuation=continuation, up_branch=None if up_branch is True else up_branch)
+    if method == "ramping":
+        for name, value in sweep_only.items():
+            if value is not None:
+                raise InputError(f"critical_speed: {name} applies to the bifurcation sweep, not to ramping (which "
+                                 "takes v_min_kmh, v_max_kmh, disturbance_mm, threshold_mm and deceleration)")
+    elif deceleration is not None:
+        raise InputError("critical_speed: deceleration applies to ramping (method=\"ramping\"), not to the "
+                         "bifurcation sweep")
     s = _scenario_of(sc)
     cont = -1 if continuation is None else int(bool(continuation))
     args = (s, method, model, reduction if isinstance(reduction, str) else ",".join(map(str, _reduction(reduction))),

@@ -102,9 +102,12 @@ def test_critical_speed_matches_the_program(cli, tmp_path):
     for method in ("bifurcation", "ramping"):
         out = tmp_path / method
         # 6 s per point: the last 30 % (1.8 s) holds the cycles a verdict needs (1 s runs have none: exit 2).
-        r = railsim.critical_speed(sc, method=method, v_min_kmh=60, v_max_kmh=180, v_step_kmh=60, duration=6.0)
-        code, text = cli("critical-speed", SINGLE, "--method", method, "--v-min", 60, "--v-max", 180, "--v-step", 60,
-                         "--duration", 6.0, "--out", out)
+        # (The sweep's step and duration do not apply to ramping: both refuse them there.)
+        sweep = dict(v_step_kmh=60, duration=6.0) if method == "bifurcation" else {}
+        r = railsim.critical_speed(sc, method=method, v_min_kmh=60, v_max_kmh=180, **sweep)
+        args = ["--v-step", 60, "--duration", 6.0] if method == "bifurcation" else []
+        code, text = cli("critical-speed", SINGLE, "--method", method, "--v-min", 60, "--v-max", 180, *args,
+                         "--out", out)
         assert code == 0, text
         with open(out / "summary.json") as f:
             s = json.load(f)
@@ -156,13 +159,17 @@ def test_critical_speed_says_when_there_is_no_verdict(cli, tmp_path):
     (dict(disturbance_mm=-50.0), "disturbance_mm: expected a number in [0.01, 20] mm"),
     (dict(small_disturbance_mm=0.0), "small_disturbance_mm: expected a number in [0.001, 20] mm"),
     (dict(threshold_mm=-1.0), "threshold_mm: expected a number in [0.001, 20] mm"),
-    (dict(deceleration=50.0), "deceleration: expected a number in [0.001, 10] m/s^2"),
+    (dict(method="ramping", deceleration=50.0), "deceleration: expected a number in [0.001, 10] m/s^2"),
     (dict(threads=-3), "threads: expected a whole number in [0, 256]"),
     # NaN is the binding's "not given": given by the caller it is refused, not replaced by the default.
     (dict(v_min_kmh=float("nan"), v_max_kmh=100.0), "critical_speed: v_min_kmh = nan: expected a finite number"),
     (dict(duration=float("nan")), "critical_speed: duration = nan: expected a finite number"),
     (dict(threshold_mm=float("inf")), "critical_speed: threshold_mm = inf: expected a finite number"),
     (dict(threads=1.5), "critical_speed: threads = 1.5: expected a whole number"),
+    # What does not apply to the method is refused, as on the command line.
+    (dict(method="ramping", duration=3.0), "critical_speed: duration applies to the bifurcation sweep, not to ramping"),
+    (dict(method="ramping", up_branch=False), "critical_speed: up_branch applies to the bifurcation sweep"),
+    (dict(deceleration=1.0), "critical_speed: deceleration applies to ramping"),
 ])
 def test_critical_speed_refuses_what_the_program_refuses(kwargs, names):
     # The command line's ranges, naming the Python argument (before: a 1 ms duration gave no critical speed and
