@@ -14,11 +14,13 @@
 
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "config/yaml_input.hpp"
 #include "contact/reduction.hpp"
 #include "core/errors.hpp"
+#include "core/output_lock.hpp"
 #include "engine/analysis/critical_speed.hpp"
 #include "engine/analysis/critical_speed_study.hpp"
 #include "engine/analysis/sweep_limits.hpp"
@@ -51,6 +53,9 @@ py::dict run(const engine::Scenario& sc, const std::string& out_dir) {
   engine::ScenarioRunOptions o;
   o.out_dir = out_dir;
   o.keep_channels = true;
+  // One writer per output folder, as the program (a running `railsim` in it: InputError naming its pid).
+  std::optional<OutputLock> lock;
+  if (!out_dir.empty()) lock.emplace(out_dir);
   engine::ScenarioRunResult r;
   {
     py::gil_scoped_release release;
@@ -101,6 +106,7 @@ py::dict critical_speed(const engine::Scenario& base, const std::string& method,
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw InputError(dir + ": cannot create the output folder (" + ec.message() + ")");
+  const OutputLock lock(dir);  // one writer per output folder, as the program
 
   engine::CriticalSpeedOutcome r;
   {

@@ -191,3 +191,27 @@ def test_modes_refuses_what_the_program_refuses(args, count, names):
     sc = railsim.load_scenario(SINGLE)
     with pytest.raises(railsim.InputError, match=re.escape(names)):
         railsim.modes(sc, *args, count=count)
+
+
+def test_output_folder_lock_is_the_programs(tmp_path):
+    # A folder another writer holds (as a running `railsim` holds its --out: flock on DIR/.railsim.lock with its
+    # pid inside) is refused by run and critical_speed, naming the holder (Python wrote into it before).
+    import fcntl
+    out = tmp_path / "held"
+    out.mkdir()
+    with open(out / ".railsim.lock", "w") as held:
+        fcntl.flock(held, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        held.write("4242")
+        held.flush()
+        sc = railsim.load_scenario(SINGLE)
+        with pytest.raises(railsim.InputError, match=r"another railsim process \(pid 4242\)"):
+            railsim.run(sc, out=out)
+        with pytest.raises(railsim.InputError, match=r"another railsim process \(pid 4242\)"):
+            railsim.critical_speed(sc, v_min_kmh=150, v_max_kmh=200, out=out)
+        assert not (out / "summary.json").exists()
+    # Released: the folder is free again.
+    spec = dict(duration=0.2)
+    with open(SINGLE) as f:
+        spec = {**yaml.safe_load(f), **spec}
+    railsim.run(railsim.scenario(spec, base_dir=source("scenarios")), out=out)
+    assert (out / "summary.json").exists()
