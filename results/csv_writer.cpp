@@ -26,6 +26,7 @@ CsvWriter::CsvWriter(const std::string& path, std::vector<std::string> columns, 
   }
   file_ = std::fopen(path.c_str(), append ? "ab" : "wb");
   if (!file_) throw InputError(path + ": cannot open for writing (" + std::strerror(errno) + ")");
+  std::setvbuf(file_, nullptr, _IONBF, 0);  // rows are buffered in pending_ and written whole
   if (write_header) {
     for (std::size_t i = 0; i < columns_.size(); ++i)
       std::fprintf(file_, "%s%s", i ? "," : "", columns_[i].c_str());
@@ -40,7 +41,11 @@ CsvWriter::CsvWriter(const std::string& path, std::vector<std::string> columns, 
 }
 
 CsvWriter::~CsvWriter() {
-  if (file_) std::fclose(file_);  // unchecked here: close() reports a failure
+  if (!file_) return;
+  // The whole rows not yet written (unchecked here: close() reports a failure).
+  const std::size_t whole = pending_.rfind('\n');
+  if (whole != std::string::npos) std::fwrite(pending_.data(), 1, whole + 1, file_);
+  std::fclose(file_);
 }
 
 void CsvWriter::close() {
@@ -53,27 +58,27 @@ void CsvWriter::close() {
 }
 
 void CsvWriter::separator() {
-  if (cells_in_row_ > 0) std::fputc(',', file_);
+  if (cells_in_row_ > 0) pending_ += ',';
   ++cells_in_row_;
 }
 
 CsvWriter& CsvWriter::cell(double v) {
   separator();
   if (std::isnan(v)) {
-    std::fputs("nan", file_);
+    pending_ += "nan";
     return *this;
   }
   // std::to_chars with a precision formats exactly as printf's %.*g does,
   // several times faster (it sets the cost of writing long runs).
   char buf[64];
   const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general, precision_);
-  std::fwrite(buf, 1, std::size_t(r.ptr - buf), file_);
+  pending_.append(buf, std::size_t(r.ptr - buf));
   return *this;
 }
 
 CsvWriter& CsvWriter::cell(long v) {
   separator();
-  std::fprintf(file_, "%ld", v);
+  pending_ += std::to_string(v);
   return *this;
 }
 
@@ -81,15 +86,15 @@ CsvWriter& CsvWriter::cell(std::string_view text) {
   separator();
   const bool quote = text.find_first_of(",\"\n") != std::string_view::npos;
   if (!quote) {
-    std::fwrite(text.data(), 1, text.size(), file_);
+    pending_.append(text.data(), text.size());
     return *this;
   }
-  std::fputc('"', file_);
+  pending_ += '"';
   for (char c : text) {
-    if (c == '"') std::fputc('"', file_);
-    std::fputc(c, file_);
+    if (c == '"') pending_ += '"';
+    pending_ += c;
   }
-  std::fputc('"', file_);
+  pending_ += '"';
   return *this;
 }
 
@@ -97,10 +102,12 @@ void CsvWriter::end_row() {
   if (cells_in_row_ != columns_.size())
     throw std::logic_error(path_ + ": row has " + std::to_string(cells_in_row_) + " cells, header has " +
                            std::to_string(columns_.size()));
-  std::fputc('\n', file_);
+  pending_ += '\n';
   cells_in_row_ = 0;
-  // A buffered write that already failed (the buffer went out full) shows at once.
-  if (++rows_since_flush_ >= flush_every_ || std::ferror(file_)) flush();
+  // Every flush_every rows, and whenever 8 KiB are pending (as a stdio buffer:
+  // bounded memory, and a failing disk shows within a few hundred rows).
+  constexpr std::size_t kChunk = 8192;
+  if (++rows_since_flush_ >= flush_every_ || pending_.size() >= kChunk) flush();
 }
 
 void CsvWriter::row(const std::vector<double>& values) {
@@ -112,9 +119,17 @@ void CsvWriter::flush() {
   // A full disk or a lost device shows here (the rows are buffered): an
   // error naming the file, never a run that ends as if its rows were kept.
   if (!file_) throw std::logic_error(path_ + ": write after close");
-  if (std::fflush(file_) != 0 || std::ferror(file_))
-    throw InputError(path_ + ": write failed (" + std::strerror(errno) + "): the rows since the last flush are lost");
+  write_pending(pending_.size());
   rows_since_flush_ = 0;
+}
+
+void CsvWriter::write_pending(std::size_t bytes) {
+  const std::size_t written = bytes > 0 ? std::fwrite(pending_.data(), 1, bytes, file_) : 0;
+  const bool failed = written != bytes || std::fflush(file_) != 0 || std::ferror(file_);
+  const int err = errno;
+  pending_.erase(0, bytes);
+  if (failed)
+    throw InputError(path_ + ": write failed (" + std::strerror(err) + "): the rows since the last flush are lost");
 }
 
 namespace {

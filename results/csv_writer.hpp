@@ -45,7 +45,11 @@ class CsvWriter {
 
  private:
   void separator();
+  void write_pending(std::size_t bytes);  // the first `bytes` of pending_ to the file, unbuffered
   std::string path_;
+  // Rows not yet written, the current one last: the file receives whole rows
+  // only, in one write each flush (a run stopped by a signal leaves no torn row).
+  std::string pending_;
   std::vector<std::string> columns_;
   std::FILE* file_ = nullptr;
   int flush_every_;

@@ -116,3 +116,29 @@ TEST_CASE("buffered rows that cannot be written: the row that fills the buffer o
   ok.close();
   CHECK(read_csv(dir + "/few.csv").rows.size() == 10);
 }
+
+TEST_CASE("the file holds whole rows only, whatever is pending", "[results][csv][write]") {
+  // Rows are written whole (a run stopped by a signal left a torn last row: 29 of 103 cells): between
+  // flushes the file ends with a complete row, and rows pending at destruction are written whole.
+  const std::string dir = railsim::test::temp_dir("csv_whole_rows");
+  const std::string path = dir + "/rows.csv";
+  auto ends_with_whole_row = [&] {
+    const std::string t = railsim::test::read_text(path);
+    return !t.empty() && t.back() == '\n';
+  };
+  {
+    CsvWriter w(path, {"a", "b", "c"}, false, 1000000);
+    for (int i = 0; i < 5000; ++i) {  // 8 KiB chunks go out on the way
+      w.cell(1.0 * i).cell(0.123456789);
+      CHECK(ends_with_whole_row());  // the row being built is not in the file
+      w.cell(2.0);
+      w.end_row();
+    }
+    CHECK(ends_with_whole_row());
+    CHECK(read_csv(path).rows.size() < 5000);  // some rows still pending
+    w.cell(7.0).cell(8.0);                       // a row left half-built
+  }                                              // destroyed without close()
+  const auto t = read_csv(path);
+  CHECK(t.rows.size() == 5000);  // the whole rows, not the half one
+  CHECK(t.number(4999, "a") == 4999.0);
+}
