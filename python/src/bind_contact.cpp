@@ -86,19 +86,26 @@ Column one(const double& v) { return Column{&v, 1, 0}; }
 // The Hertz patch of one point with the ranges of `railsim contact`'s case
 // files: Fz, E, nu, the curvatures or semi-axes given, and the semi-axes of
 // the patch the curvatures give, in [1e-6, 1] m.
-contact::HertzPatch checked_hertz_patch(double s1, double s2, bool curvatures, double Fz,
-                                        const contact::Material& m) {
+// The Hertz patch's data (per point or one value): the curvatures or the
+// semi-axes, the load and the material's E and nu.
+void check_patch_data(bool curvatures, const Column& s1, const Column& s2, const Column& Fz, const Column& E,
+                      const Column& nu) {
   constexpr double kHuge = std::numeric_limits<double>::max();
   if (curvatures) {
-    check_range(one(s1), "A", 0.0, kHuge, true, false, " 1/m");
-    check_range(one(s2), "B", 0.0, kHuge, true, false, " 1/m");
+    check_range(s1, "A", 0.0, kHuge, true, false, " 1/m");
+    check_range(s2, "B", 0.0, kHuge, true, false, " 1/m");
   } else {
-    check_range(one(s1), "a", 1e-6, 1.0, false, false, " m");
-    check_range(one(s2), "b", 1e-6, 1.0, false, false, " m");
+    check_range(s1, "a", 1e-6, 1.0, false, false, " m");
+    check_range(s2, "b", 1e-6, 1.0, false, false, " m");
   }
-  check_range(one(Fz), "Fz", 0.0, 1e7, true, false, " N");
-  check_range(one(m.E), "E", 1e9, 1e13, false, false, " Pa");
-  check_range(one(m.nu), "nu", 0.0, 0.5, false, true);
+  check_range(Fz, "Fz", 0.0, 1e7, true, false, " N");
+  check_range(E, "E", 1e9, 1e13, false, false, " Pa");
+  check_range(nu, "nu", 0.0, 0.5, false, true);
+}
+
+contact::HertzPatch checked_hertz_patch(double s1, double s2, bool curvatures, double Fz,
+                                        const contact::Material& m) {
+  check_patch_data(curvatures, one(s1), one(s2), one(Fz), one(m.E), one(m.nu));
   const contact::HertzPatch p =
       curvatures ? contact::hertz_from_load(s1, s2, Fz, m) : contact::hertz_from_semi_axes(s1, s2, Fz, m);
   if (curvatures) {
@@ -132,16 +139,7 @@ py::dict solve_arrays(const std::string& model_name, bool curvatures, const Arra
   check_range(cx, "xi", -kHuge, kHuge);
   check_range(ce, "eta", -kHuge, kHuge);
   check_range(cp, "phi", -kHuge, kHuge, false, false, " 1/m");
-  if (curvatures) {
-    check_range(c1, "A", 0.0, kHuge, true, false, " 1/m");
-    check_range(c2, "B", 0.0, kHuge, true, false, " 1/m");
-  } else {
-    check_range(c1, "a", 1e-6, 1.0, false, false, " m");
-    check_range(c2, "b", 1e-6, 1.0, false, false, " m");
-  }
-  check_range(cf, "Fz", 0.0, 1e7, true, false, " N");
-  check_range(cE, "E", 1e9, 1e13, false, false, " Pa");
-  check_range(cnu, "nu", 0.0, 0.5, false, true);
+  check_patch_data(curvatures, c1, c2, cf, cE, cnu);
   check_range(cmu, "mu", 0.0, 2.0, true);
   check_range(cv, "V", 0.0, 200.0, false, false, " m/s");
   check_range(ck1, "k11", 0.0, 1.5, true);
