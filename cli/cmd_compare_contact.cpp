@@ -247,7 +247,7 @@ int run_compare_contact(const CompareArgs& a) {
   std::error_code ec;
   fs::create_directories(a.out, ec);
   if (ec) throw InputError("--out " + a.out + ": cannot create the folder (" + ec.message() + ")");
-  const OutputLock lock(a.out);  // one writer per output folder
+  const OutputLock lock(a.out, "compare-contact");  // one writer per output folder
 
   std::vector<engine::ComparisonCase> cases;
   for (const auto& c : set.cases) cases.push_back({c.id, c.input});

@@ -45,7 +45,7 @@ int run_compare_yq(const CompareYqArgs& a) {
   std::error_code ec;
   std::filesystem::create_directories(a.out, ec);
   if (ec) throw InputError("--out " + a.out + ": cannot create the folder (" + ec.message() + ")");
-  const OutputLock lock(a.out);  // one writer per output folder
+  const OutputLock lock(a.out, "compare-yq");  // one writer per output folder
   const engine::Scenario sc = engine::load_scenario(a.scenario);
   std::vector<std::string> labels;
   if (!a.labels.empty()) {

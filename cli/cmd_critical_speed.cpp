@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/support_interrupt.hpp"
 #include "cli/support_option_checks.hpp"
 #include "engine/analysis/sweep_limits.hpp"
 #include "config/yaml_input.hpp"
@@ -96,6 +97,7 @@ engine::CriticalSpeedStudySettings study_settings(const CriticalSpeedArgs& a, co
   engine::apply_overrides(s, given);
   s.up_branch = a.up_branch;
   s.threads = a.threads;
+  s.stop = interrupt_request();  // Ctrl-C: finished points stay for the resume
   return s;
 }
 
@@ -286,7 +288,7 @@ int run_critical_speed(const CriticalSpeedArgs& a) {
   const engine::MpiContext mpi = engine::mpi_context();
   // One job per output folder (the ranks of one MPI job share it: rank 0 holds the lock).
   std::optional<OutputLock> lock;
-  if (mpi.rank == 0) lock.emplace(a.out);
+  if (mpi.rank == 0) lock.emplace(a.out, "critical-speed");
   engine::Scenario base = engine::load_scenario(a.scenario);
   const engine::CriticalSpeedStudySettings s = study_settings(a, base.critical_speed);
   engine::check_speed_range(s.v_min * 3.6, s.v_max * 3.6, s.v_step * 3.6);

@@ -40,7 +40,7 @@ struct ModesArgs {
 
 int run_modes(const ModesArgs& a) {
   const int n = engine::check_speed_range(a.v_min_kmh, a.v_max_kmh, a.v_step_kmh);
-  const OutputLock lock(a.out);  // one writer per output folder
+  const OutputLock lock(a.out, "modes");  // one writer per output folder
   const engine::Scenario sc = engine::load_scenario(a.scenario);
   std::error_code ec;
   std::filesystem::create_directories(a.out, ec);

@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "cli/commands.hpp"
+#include "cli/support_interrupt.hpp"
 #include "cli/support_option_checks.hpp"
 #include "cli/support_scenario_overrides.hpp"
 #include "core/errors.hpp"
@@ -30,11 +31,15 @@ struct RunArgs {
   std::vector<std::string> sets;
   int contact_audit = 0;          // states to audit (when audit_given)
   bool audit_given = false;
+  std::vector<std::string> audit_settings_given;  // --audit-tolerance, --audit-threads given
   double audit_tolerance = 2.0;   // [% of mu N]
   int audit_threads = 0;          // 0: the machine's cores
 };
 
 int run_scenario(const RunArgs& a) {
+  // The audit's settings without the audit were ignored silently.
+  if (!a.audit_given && !a.audit_settings_given.empty())
+    throw InputError(a.audit_settings_given.front() + ": applies to the contact audit; give --contact-audit N as well");
   if (a.audit_given && (a.contact_audit < engine::kMinAuditSamples || a.contact_audit > engine::kMaxAuditSamples))
     throw InputError("--contact-audit " + std::to_string(a.contact_audit) + ": the number of contact states must "
                      "lie in [1, " + std::to_string(engine::kMaxAuditSamples) + "]");
@@ -44,10 +49,11 @@ int run_scenario(const RunArgs& a) {
   std::vector<ScenarioOverride> overrides;
   for (const auto& s : a.sets) overrides.push_back(parse_set_option(s));
   if (a.speed_kmh > 0.0) overrides.push_back(speed_kmh_override(a.speed_kmh));
-  const OutputLock lock(a.out);  // one writer per output folder
+  const OutputLock lock(a.out, "run");  // one writer per output folder
   const LoadedScenario loaded = load_scenario_with_overrides(a.scenario, overrides);
   engine::ScenarioRunOptions o;
   o.out_dir = a.out;
+  o.stop = interrupt_request();  // Ctrl-C: channels.csv up to then, summary.json "interrupted"
   for (const auto& ov : overrides) o.overrides.push_back(ov.option);
   o.contact_audit.samples = a.audit_given ? a.contact_audit : 0;
   o.contact_audit.tolerance = a.audit_tolerance / 100.0;
@@ -76,14 +82,20 @@ void register_run(CLI::App& app, CommandRunner& run) {
                   "track.segments[2].radius=500, initial[ws1.lateral]=0.007); repeatable");
   auto* audit = cmd->add_option("--contact-audit", args->contact_audit,
                   "Audit N of the run's own contact states (1..10000; the extremes and the rest evenly in time) "
-                  "with MIM (grid 60) and every registered model: contact_audit.csv, contact_audit.png, summary.json");
-  cmd->add_option("--audit-tolerance", args->audit_tolerance,
+                  "with MIM (grid 60) and every registered model: contact_audit.csv, contact_audit.png, summary.json")
+      ->check(number_range(engine::kMinAuditSamples, engine::kMaxAuditSamples));
+  auto* tolerance = cmd->add_option("--audit-tolerance", args->audit_tolerance,
                   "Contact audit: error a model may reach, per cent of mu N (0 < PCT <= 100)")
       ->capture_default_str();
-  cmd->add_option("--audit-threads", args->audit_threads, "Contact audit: worker threads (0: all cores, at most 64)")
-      ->capture_default_str();
-  cmd->callback([args, &run, audit] {
+  auto* threads = cmd->add_option("--audit-threads", args->audit_threads,
+                                  "Contact audit: worker threads (0: all cores, at most 64)")
+                      ->check(number_range(0, 64))
+                      ->capture_default_str();
+  cmd->callback([args, &run, audit, tolerance, threads] {
     args->audit_given = audit->count() > 0;
+    args->audit_settings_given.clear();
+    for (const CLI::Option* opt : {tolerance, threads})
+      if (opt->count() > 0) args->audit_settings_given.push_back(opt->get_name());
     run = [args] { return run_scenario(*args); };
   });
 }

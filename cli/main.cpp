@@ -5,6 +5,8 @@
 // "railsim X.Y.Z" (as help2man expects); `railsim version` says more.
 // Every numeric option is refused unless finite (cli/support_option_checks.hpp).
 // SIGXFSZ is ignored, so a file past the size limit is a failed write (exit 2).
+// SIGINT / SIGTERM stop a run or sweep between output points, keeping what it
+// finished (cli/support_interrupt.hpp): exit 130 / 143.
 // Under mpirun, MPI is started here for the whole run (engine::MpiSession).
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
@@ -18,6 +20,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "cli/support_interrupt.hpp"
 #include "cli/support_option_checks.hpp"
 #include "core/errors.hpp"
 #include "core/version.hpp"
@@ -67,8 +70,15 @@ int main(int argc, char** argv) {
       return railsim::kExitBadInput;
     }
     const int code = app.exit(e);
-    // --help and --version are successes; everything else is bad input.
-    return code == 0 ? railsim::kExitSuccess : railsim::kExitBadInput;
+    // --help and --version are successes (if they reached standard output);
+    // everything else is bad input.
+    if (code != 0) return railsim::kExitBadInput;
+    std::cout.flush();
+    if (std::fflush(stdout) != 0 || std::ferror(stdout) || !std::cout) {
+      std::cerr << "railsim: standard output: write failed (" << std::strerror(errno) << ")\n";
+      return railsim::kExitBadInput;
+    }
+    return railsim::kExitSuccess;
   }
 
   // The message that ends a run reaches stderr at any --log-level (off and
@@ -82,6 +92,8 @@ int main(int argc, char** argv) {
   spdlog::set_level(spdlog::level::from_str(log_level));
   spdlog::set_pattern("[%H:%M:%S.%e] [%^%l%$] %v");
 
+  // Ctrl-C / SIGTERM: the running command stops between output points and keeps what it finished.
+  railsim::cli::install_interrupt_handlers();
   try {
     const int code = run ? run() : railsim::kExitSuccess;
     // Printed results count as output: a full disk behind
@@ -93,6 +105,9 @@ int main(int argc, char** argv) {
   } catch (const railsim::InputError& e) {
     fatal(spdlog::level::err, e.what());
     return railsim::kExitBadInput;
+  } catch (const railsim::InterruptedError& e) {
+    fatal(spdlog::level::warn, std::string(e.what()) + " (stopped by a signal; what was finished is written)");
+    return railsim::cli::interrupt_exit_code();
   } catch (const railsim::NumericalError& e) {
     fatal(spdlog::level::err, std::string("numerical failure: ") + e.what());
     return railsim::kExitNumericalFailure;

@@ -152,6 +152,14 @@ ContactAuditResult audit_contacts(const std::vector<ContactInput>& states, const
     std::vector<std::unique_ptr<TangentialWorkspace>> ws;
     for (const auto& m : models) ws.push_back(m->make_workspace());
     for (std::size_t s = next++; s < S; s = next++) {
+      if (o.stop.requested()) {
+        const std::lock_guard<std::mutex> lock(failure_mutex);
+        if (!failure)
+          failure = std::make_exception_ptr(InterruptedError("contact audit interrupted before state " +
+                                                             std::to_string(s + 1) + " of " + std::to_string(S)));
+        next = S;
+        return;
+      }
       const ContactInput& in = states[s];
       if (!(in.patch.Fz > 0.0 && in.patch.a > 0.0 && in.patch.b > 0.0)) continue;  // no load or no patch
       try {

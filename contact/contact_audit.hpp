@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "contact/types.hpp"
+#include "core/stop_request.hpp"
 
 namespace railsim::contact {
 
@@ -47,6 +48,7 @@ struct ContactAuditOptions {
   std::string cache_dir;       // table cache folder for tabulated models
   std::string saturation = "none";  // saturation law of the model "coefficients" (registry.hpp)
   int threads = 1;             // worker threads, in [1, 64]
+  StopRequest stop;            // polled before each state: InterruptedError (core/stop_request.hpp)
 };
 
 struct ModelAudit {

@@ -8,7 +8,12 @@
 //                contact, integrator step collapse, a solver that did not
 //                converge). The message names the time, the place and the model.
 //
-// The command-line program maps them to exit codes 2 and 3.
+// InterruptedError: the user stopped the computation (Ctrl-C, SIGTERM,
+//                KeyboardInterrupt; core/stop_request.hpp). Neither a result
+//                nor a failure: what was finished is kept, nothing is judged.
+//
+// The command-line program maps them to exit codes 2 and 3, and 130 (SIGINT)
+// or 143 (SIGTERM) for an interruption, as a shell reports a killed program.
 #pragma once
 
 #include <stdexcept>
@@ -19,6 +24,7 @@ namespace railsim {
 inline constexpr int kExitSuccess = 0;
 inline constexpr int kExitBadInput = 2;
 inline constexpr int kExitNumericalFailure = 3;
+inline constexpr int kExitInterrupted = 130;  // 128 + SIGINT
 
 class InputError : public std::runtime_error {
  public:
@@ -48,6 +54,12 @@ class DerailmentError : public NumericalError {
 class ModelRangeError : public NumericalError {
  public:
   using NumericalError::NumericalError;
+};
+
+// The user asked a running computation to stop (core/stop_request.hpp).
+class InterruptedError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
 };
 
 }  // namespace railsim

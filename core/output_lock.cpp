@@ -8,12 +8,13 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 
 #include "core/errors.hpp"
 
 namespace railsim {
 
-OutputLock::OutputLock(const std::string& dir) {
+OutputLock::OutputLock(const std::string& dir, const std::string& analysis) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw InputError(dir + ": cannot create the output folder (" + ec.message() + ")");
@@ -35,6 +36,26 @@ OutputLock::OutputLock(const std::string& dir) {
   const std::string pid = std::to_string(static_cast<long>(::getpid()));
   if (::ftruncate(fd_, 0) == 0 && ::pwrite(fd_, pid.data(), pid.size(), 0) < 0) {
     // The pid is for messages only.
+  }
+  if (analysis.empty()) return;
+  // Whose results the folder holds (written by the holder of the lock only).
+  const std::string marker = dir + "/.railsim.analysis";
+  std::string before;
+  if (std::ifstream in(marker); in) std::getline(in, before);
+  if (!before.empty() && before != analysis) {
+    ::close(fd_);
+    fd_ = -1;
+    throw InputError(dir + ": holds the results of `railsim " + before + "` (" + marker + "); `railsim " + analysis +
+                     "` would replace its summary.json: give another output folder, or remove this one first");
+  }
+  if (before.empty()) {
+    std::ofstream out(marker, std::ios::trunc);
+    out << analysis << "\n";
+    if (!out.flush()) {
+      ::close(fd_);
+      fd_ = -1;
+      throw InputError(marker + ": cannot write (" + std::strerror(errno) + ")");
+    }
   }
 }
 

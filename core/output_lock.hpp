@@ -5,6 +5,10 @@
 // writing over, or deleting, the first one's partial files. The kernel drops
 // the lock when the holder exits, even by kill -9, so a folder is never left
 // locked (the empty lock file stays; it is harmless and reused).
+// Given the analysis that writes the folder ("run", "critical-speed", ...),
+// the lock also records it in DIR/.railsim.analysis and refuses a folder that
+// holds another analysis's results (its summary.json, its verdict, would be
+// replaced by a different kind of document).
 #pragma once
 
 #include <string>
@@ -14,8 +18,9 @@ namespace railsim {
 class OutputLock {
  public:
   // Creates `dir` if needed, then locks it; throws InputError when another
-  // process holds the lock or the lock file cannot be created.
-  explicit OutputLock(const std::string& dir);
+  // process holds the lock or the lock file cannot be created, or when
+  // `analysis` is given and the folder holds the results of another one.
+  explicit OutputLock(const std::string& dir, const std::string& analysis = "");
   ~OutputLock();
   OutputLock(const OutputLock&) = delete;
   OutputLock& operator=(const OutputLock&) = delete;

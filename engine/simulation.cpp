@@ -22,7 +22,7 @@ double thread_cpu_seconds() {
 }  // namespace
 
 RunSummary simulate(const Model& model, const IntegratorOptions& options, const Eigen::VectorXd& x0,
-                    double duration, double dt_out, const Observer& observer) {
+                    double duration, double dt_out, const Observer& observer, const StopRequest& stop) {
   Data data(model), rec(model);
   rec.record_patches = true;  // the reported outputs carry each patch's contact input (contact audit)
   ModelOde ode(model, data);
@@ -65,6 +65,12 @@ RunSummary simulate(const Model& model, const IntegratorOptions& options, const 
       throw NumericalError(std::string(e.what()) + where);
     }
     report(t);
+    if (k < n_out && stop.requested()) {
+      char buf[160];
+      std::snprintf(buf, sizeof buf, "interrupted at t = %.6g s of %.6g s (track distance %.2f m)", t, duration,
+                    model.speed.distance(t));
+      throw InterruptedError(buf);
+    }
   }
   sum.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   sum.cpu_time = thread_cpu_seconds() - cpu0;

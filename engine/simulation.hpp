@@ -4,6 +4,9 @@
 // time and the real-time factor (simulated time / wall time). Failures throw
 // NumericalError (integrator.hpp) naming the last step size; a derailment
 // (the model's physics: a wheelset past its flange) throws DerailmentError.
+// A stop request (core/stop_request.hpp) is polled after every output point;
+// when it is set, InterruptedError names the time and place reached (the
+// observer has seen every output up to it).
 #pragma once
 
 #include <Eigen/Core>
@@ -11,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "core/stop_request.hpp"
 #include "engine/data.hpp"
 #include "engine/integrators/integrator.hpp"
 #include "engine/model.hpp"
@@ -34,7 +38,8 @@ struct RunSummary {
 using Observer = std::function<void(double t, const Eigen::VectorXd& x, const Data& d)>;
 
 RunSummary simulate(const Model& model, const IntegratorOptions& options, const Eigen::VectorXd& x0,
-                    double duration, double output_interval, const Observer& observer = {});
+                    double duration, double output_interval, const Observer& observer = {},
+                    const StopRequest& stop = {});
 
 // Channel names of the standard output (channels.csv) and one row of values:
 // time, distance, speed; per wheelset <ws>.y, <ws>.yaw (relative to the

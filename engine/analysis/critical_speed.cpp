@@ -69,7 +69,7 @@ PointOutcome run_point(const Scenario& base, double speed, const Eigen::VectorXd
   PointOutcome out;
   std::string range_stop;  // the message of a run whose motion left the model's range
   try {
-    simulate(sc.model, sc.integrator, x0, o.duration, dt, obs);
+    simulate(sc.model, sc.integrator, x0, o.duration, dt, obs, o.stop);
   } catch (const DerailmentError& e) {
     // A run that derails is hunting violently: it counts as unstable, with the
     // amplitude it had reached.
@@ -646,7 +646,7 @@ RampingResult ramping(const Scenario& scenario, const RampingOptions& o) {
   };
   try {
     simulate(sc.model, sc.integrator, disturbed_state(sc, o.disturbance), o.settle_time, o.output_interval,
-             record(sc, 0.0));
+             record(sc, 0.0), o.stop);
   } catch (const DerailmentError& e) {
     char phase[96];
     std::snprintf(phase, sizeof phase, "while settling at the start speed %.1f km/h (lower the start speed)",
@@ -678,7 +678,7 @@ RampingResult ramping(const Scenario& scenario, const RampingOptions& o) {
     const double duration = (o.v_start - o.v_end) / o.deceleration;
     const std::size_t first_ramp = t_all.size();
     try {
-      simulate(ramp.model, ramp.integrator, x_end, duration, o.output_interval, record(ramp, o.settle_time));
+      simulate(ramp.model, ramp.integrator, x_end, duration, o.output_interval, record(ramp, o.settle_time), o.stop);
     } catch (const DerailmentError& e) {
       derailed(e, "during the ramp");
     } catch (const ModelRangeError& e) {

@@ -27,6 +27,7 @@
 #include <string>
 #include <vector>
 
+#include "core/stop_request.hpp"
 #include "engine/analysis/sweep_runner.hpp"
 #include "engine/io/scenario.hpp"
 
@@ -54,6 +55,7 @@ struct BifurcationOptions {
   int threads = 0;                   // 0: all cores
   bool use_mpi = false;              // spread the points over mpirun ranks (MPI started in main())
   std::string label = "bifurcation sweep";  // progress messages
+  StopRequest stop;                  // polled by every run: InterruptedError (finished points stay in the file)
 };
 
 // Branch of a bifurcation sweep: down = from the large initial lateral shift
@@ -134,6 +136,7 @@ struct RampingOptions {
   double collapse_rate = 0.1;        // envelope decay rate that marks the collapse [1/s]
   double settle_time = 3.0;          // constant speed at v_start before the ramp [s]
   double output_interval = 0.002;    // sampling of the lateral shifts [s]
+  StopRequest stop;                  // polled by the runs: InterruptedError
 };
 
 struct RampingResult {

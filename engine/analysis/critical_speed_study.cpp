@@ -101,6 +101,7 @@ BifurcationOptions bifurcation_options(const CriticalSpeedStudySettings& s) {
   o.continuation = s.continuation;
   o.threads = s.threads;
   o.use_mpi = true;
+  o.stop = s.stop;
   return o;
 }
 
@@ -111,6 +112,7 @@ RampingOptions ramping_options(const CriticalSpeedStudySettings& s) {
   o.deceleration = s.deceleration;
   o.disturbance = s.ramp_disturbance;
   o.threshold = s.threshold;
+  o.stop = s.stop;
   return o;
 }
 

@@ -44,6 +44,7 @@ struct CriticalSpeedStudySettings {
   double ramp_disturbance = 8e-3;      // ramping initial lateral shift [m]
   std::string ramp_start_source;       // where the start speed came from (for the record)
   int threads = 0;                     // worker threads per process; 0 = all cores
+  StopRequest stop;                    // Ctrl-C / KeyboardInterrupt: InterruptedError (core/stop_request.hpp)
 };
 
 // A scenario's critical_speed section (engine/io/scenario.hpp) as study

@@ -62,6 +62,7 @@ RunContactAudit run_contact_audit(const ContactStateRecorder& rec, const Couplin
   co.tolerance = o.tolerance;
   co.threads = o.threads;
   co.cache_dir = o.cache_dir;
+  co.stop = o.stop;
   co.saturation = run.saturation;
   const std::string run_model = contact::find_tangential_model(run.tangential).name;
   for (const auto& e : contact::tangential_models())

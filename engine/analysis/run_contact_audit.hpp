@@ -45,6 +45,7 @@ struct RunContactAuditOptions {
   int mim_grid = 60;         // reference grid, in [8, 400]
   double mim_tolerance = 1e-6;
   std::string cache_dir;     // for a tabulated run model
+  StopRequest stop;          // polled before each state (InterruptedError)
 };
 
 struct RunContactAudit {

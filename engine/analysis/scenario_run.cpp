@@ -589,7 +589,16 @@ void audit_run(const engine::Scenario& sc, const ContactStateRecorder& rec, cons
   spdlog::info("contact audit: {} of the run's {} contact states, MIM grid {}, every registered model ({} threads)",
                std::min<std::size_t>(static_cast<std::size_t>(o.contact_audit.samples), rec.states().size()),
                rec.states().size(), o.contact_audit.mim_grid, o.contact_audit.threads);
-  out.contact_audit = run_contact_audit(rec, m.coupling.options(), o.contact_audit);
+  RunContactAuditOptions ao = o.contact_audit;
+  ao.stop = o.stop;
+  try {
+    out.contact_audit = run_contact_audit(rec, m.coupling.options(), ao);
+  } catch (const InterruptedError& e) {
+    // The run's results stand; the audit is marked as stopped.
+    out.summary.set("contact_audit", std::string("not completed: ") + e.what());
+    if (!o.out_dir.empty()) out.summary.write_file(o.out_dir + "/summary.json");
+    throw;
+  }
   out.audited = true;
   const RunContactAudit& a = out.contact_audit;
   out.summary.set("contact_audit", contact_audit_json(a, m));
@@ -828,7 +837,17 @@ ScenarioRunResult run_scenario(const Scenario& sc, const ScenarioRunOptions& o) 
                     if (o.keep_channels) out.channels.insert(out.channels.end(), row.begin(), row.end());
                     if (audit) contacts.record(m, t, d);
                     ++out.rows;
-                  });
+                  },
+                  o.stop);
+  } catch (const InterruptedError& e) {
+    // Stopped by the user: the rows so far are whole in channels.csv; nothing is judged.
+    if (csv) csv->close();
+    summary.set("status", "interrupted");
+    summary.set("interrupted", std::string(e.what()) + "; channels.csv holds the run up to it");
+    summary.set("warnings", scenario_warnings(sc));
+    summary.set("running_safety", "not evaluated: the run was interrupted");
+    if (files) summary.write_file(o.out_dir + "/summary.json");
+    throw;
   } catch (const DerailmentError& e) {
     // Physics: the running safety up to the derailment, failed because of it.
     if (csv) csv->close();

@@ -47,6 +47,7 @@ struct ScenarioRunOptions {
   bool keep_channels = false;  // keep every channel row in memory (ScenarioRunResult::channels)
   std::vector<std::string> overrides;  // how the scenario was varied (e.g. "--set contact.material.mu=0.2"), recorded
   RunContactAuditOptions contact_audit;  // samples = 0 (the default): no contact audit
+  StopRequest stop;  // polled between output points: InterruptedError after writing what was run
 };
 
 struct ScenarioRunResult {
@@ -63,7 +64,9 @@ struct ScenarioRunResult {
 
 // Throws InputError for a bad running_safety section or contact-audit options
 // (before running) or an output folder that cannot be made, NumericalError
-// when the run fails.
+// when the run fails, InterruptedError when `stop` was requested (channels.csv
+// then holds every row up to that time and summary.json says "interrupted",
+// with no running-safety verdict).
 ScenarioRunResult run_scenario(const Scenario& scenario, const ScenarioRunOptions& options);
 
 }  // namespace railsim::engine

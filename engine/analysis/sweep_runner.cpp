@@ -263,7 +263,16 @@ std::vector<SweepResult> run_sweep(const std::vector<SweepPoint>& points, const 
 #ifdef RAILSIM_HAVE_MPI
   if (mpi.active) MPI_Barrier(MPI_COMM_WORLD);
 #endif
-  if (first_error) std::rethrow_exception(first_error);
+  if (first_error) {
+    try {
+      std::rethrow_exception(first_error);
+    } catch (const InterruptedError& e) {
+      // Stopped by the user: say what is kept and how to go on.
+      throw InterruptedError(o.label + ": " + e.what() + "; " + std::to_string(finished.load()) + " of " +
+                             std::to_string(mine.size()) + " points of this run are kept in " + part +
+                             " (with those finished before): the same command in the same folder resumes");
+    }
+  }
 
   // Gather everything finished (all ranks' parts) and write the merged file on rank 0.
   std::vector<SweepResult> all;

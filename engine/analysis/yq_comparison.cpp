@@ -67,7 +67,7 @@ results::Json wheel_json(const YqWheelResult& w) {
 // numerically has no verdict; one of another scenario is compared with a warning.
 void read_run_status(const std::string& file, const Scenario& sc, YqRun& run, double& duration, double& interval) {
   if (!std::filesystem::exists(file))
-    throw InputError(file + ": not found: `railsim run` writes it whatever the run's end (ok, derailed, failed), "
+    throw InputError(file + ": not found: `railsim run` writes it whatever the run's end (ok, derailed, failed, interrupted), "
                      "so the run did not finish (killed?) and its Y/Q has no verdict; run it again");
   std::ifstream in(file);
   nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
@@ -81,6 +81,12 @@ void read_run_status(const std::string& file, const Scenario& sc, YqRun& run, do
                      (why.empty() ? std::string() : " (" + why + ")") +
                      "; its Y/Q has no verdict (run it again, e.g. with a tighter integrator tolerance)");
   }
+  if (run.status == "interrupted")
+    throw InputError(file + ": status '" + run.status + "': the run was stopped before its end" +
+                     (j.contains("interrupted") && j["interrupted"].is_string()
+                          ? " (" + j["interrupted"].get<std::string>() + ")"
+                          : std::string()) +
+                     "; its Y/Q has no verdict (run it to its end)");
   if (j.contains("scenario") && j["scenario"].is_string() && j["scenario"].get<std::string>() != sc.name) {
     run.warning = "a run of scenario '" + j["scenario"].get<std::string>() + "', compared against '" + sc.name +
                   "' (its wheelsets, flange angle and friction)";

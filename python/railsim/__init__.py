@@ -133,7 +133,10 @@ def load_scenario(path):
 def scenario(spec, base_dir=".", name="<python dict>"):
     """A scenario from a dict with the keys of a scenario file; relative file
     names (vehicle, track, tables) are taken from base_dir. Errors name the
-    line of the dict's JSON form (json.dumps(spec, indent=1))."""
+    line of the dict's JSON form (json.dumps(spec, indent=1)). A file name
+    (str or path) is read as load_scenario(spec) does."""
+    if isinstance(spec, (str, _os.PathLike)):
+        return load_scenario(spec)
     text = _json.dumps(_plain(spec, ""), indent=1)
     return _railsim._scenario_from_text(text, name, _os.fspath(base_dir))
 

@@ -28,6 +28,7 @@
 #include "engine/analysis/scenario_run.hpp"
 #include "engine/io/scenario.hpp"
 #include "python/src/bindings.hpp"
+#include "python/src/keyboard_interrupt.hpp"
 
 namespace py = pybind11;
 
@@ -53,9 +54,10 @@ py::dict run(const engine::Scenario& sc, const std::string& out_dir) {
   engine::ScenarioRunOptions o;
   o.out_dir = out_dir;
   o.keep_channels = true;
+  o.stop = keyboard_interrupt_request();  // Ctrl-C: files up to then, then KeyboardInterrupt
   // One writer per output folder, as the program (a running `railsim` in it: InputError naming its pid).
   std::optional<OutputLock> lock;
-  if (!out_dir.empty()) lock.emplace(out_dir);
+  if (!out_dir.empty()) lock.emplace(out_dir, "run");
   engine::ScenarioRunResult r;
   {
     py::gil_scoped_release release;
@@ -100,13 +102,14 @@ py::dict critical_speed(const engine::Scenario& base, const std::string& method,
   engine::apply_overrides(st, given);
   st.up_branch = up_branch;
   st.threads = threads;
+  st.stop = keyboard_interrupt_request();  // Ctrl-C: finished points stay for the resume
   // The command line's ranges, naming the arguments.
   engine::check_given_settings(given, threads);
   engine::check_speed_range(st.v_min * 3.6, st.v_max * 3.6, st.v_step * 3.6, {"v_min_kmh", "v_max_kmh", "v_step_kmh"});
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw InputError(dir + ": cannot create the output folder (" + ec.message() + ")");
-  const OutputLock lock(dir);  // one writer per output folder, as the program
+  const OutputLock lock(dir, "critical-speed");  // one writer per output folder, as the program
 
   engine::CriticalSpeedOutcome r;
   {

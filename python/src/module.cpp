@@ -1,7 +1,8 @@
 // railsim._railsim: the compiled part of the Python package railsim (pybind11,
 // Jakob et al. 2017-). railsim's InputError and NumericalError become the
 // Python exceptions railsim.InputError (a ValueError) and
-// railsim.NumericalError (an ArithmeticError) carrying railsim's message.
+// railsim.NumericalError (an ArithmeticError) carrying railsim's message; a
+// computation stopped by Ctrl-C (InterruptedError) raises KeyboardInterrupt.
 #include <pybind11/pybind11.h>
 
 #include "core/data_dir.hpp"
@@ -23,6 +24,9 @@ PYBIND11_MODULE(_railsim, m) {
       input_error(e.what());
     } catch (const railsim::NumericalError& e) {
       numerical_error(e.what());
+    } catch (const railsim::InterruptedError& e) {
+      // Stopped by Ctrl-C (keyboard_interrupt.hpp): the KeyboardInterrupt the check raised.
+      if (PyErr_Occurred() == nullptr) PyErr_SetString(PyExc_KeyboardInterrupt, e.what());
     }
   });
   m.def("data_dir", &railsim::data_dir, "The data folder railsim reads (profiles, plots, vehicles, tracks, scenarios)");

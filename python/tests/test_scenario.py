@@ -215,3 +215,59 @@ def test_output_folder_lock_is_the_programs(tmp_path):
         spec = {**yaml.safe_load(f), **spec}
     railsim.run(railsim.scenario(spec, base_dir=source("scenarios")), out=out)
     assert (out / "summary.json").exists()
+
+
+def _interrupt_after(seconds):
+    """SIGINT to this process after `seconds` (as Ctrl-C at the terminal)."""
+    import os
+    import signal
+    import threading
+    t = threading.Timer(seconds, os.kill, (os.getpid(), signal.SIGINT))
+    t.start()
+    return t
+
+
+def test_ctrl_c_stops_a_run_and_keeps_its_rows(tmp_path):
+    # Ctrl-C during run(): KeyboardInterrupt soon after (not at the run's
+    # end), channels.csv whole up to the time summary.json names.
+    import time
+    with open(source("scenarios/manchester_coach_curve_R300.yaml")) as f:
+        spec = yaml.safe_load(f)
+    spec["duration"] = 240.0  # minutes of work: the stop must come from Ctrl-C
+    sc = railsim.scenario(spec, base_dir=source("scenarios"))
+    full = sc.duration
+    t0 = time.monotonic()
+    timer = _interrupt_after(1.5)
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            railsim.run(sc, out=tmp_path)
+    finally:
+        timer.cancel()
+    waited = time.monotonic() - t0
+    summary = json.loads((tmp_path / "summary.json").read_text())
+    assert summary["status"] == "interrupted"
+    assert isinstance(summary["running_safety"], str)
+    t_said = float(re.search(r"t = ([0-9.e+-]+) s", summary["interrupted"]).group(1))
+    assert 0.0 < t_said < full
+    with open(tmp_path / "channels.csv") as f:
+        rows = list(csv.reader(f))
+    assert all(len(r) == len(rows[0]) for r in rows)
+    assert float(rows[-1][0]) == pytest.approx(t_said, abs=1e-5)
+    assert waited < 30.0  # stopped within the poll period, not after the whole run
+
+
+def test_ctrl_c_stops_a_sweep_which_then_resumes(tmp_path):
+    sc = railsim.scenario(source("tests/data/scenarios/single_wheelset_flange.yaml"))  # a file name: read
+    # 8 runs of 400 s simulated, four above the critical speed (hunting: no early
+    # end, about 1.6 s each here): stopped in the first of those.
+    kw = dict(v_min_kmh=150, v_max_kmh=180, v_step_kmh=10, duration=400, threads=1)
+    timer = _interrupt_after(1.5)
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            railsim.critical_speed(sc, out=tmp_path / "stopped", **kw)
+    finally:
+        timer.cancel()
+    resumed = railsim.critical_speed(sc, out=tmp_path / "stopped", **kw)
+    clean = railsim.critical_speed(sc, out=tmp_path / "clean", **kw)
+    assert resumed["critical_speed_kmh"] == clean["critical_speed_kmh"]
+    assert (tmp_path / "stopped" / "bifurcation.csv").read_text() == (tmp_path / "clean" / "bifurcation.csv").read_text()

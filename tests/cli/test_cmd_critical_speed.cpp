@@ -473,3 +473,24 @@ TEST_CASE("railsim critical-speed: a folder swept with other settings is refused
   CHECK(r.exit_code == 2);
   CHECK(r.output.find("without their settings file") != std::string::npos);
 }
+
+// A run's folder holds its verdict (summary.json): critical-speed (and modes)
+// refuse to write there instead of replacing it; the run itself may run again.
+TEST_CASE("railsim critical-speed and modes refuse a run's output folder", "[cli][critical_speed][bad_input]") {
+  const std::string dir = railsim::test::temp_dir("cli_cs_run_folder");
+  const std::string sc = railsim::test::source_path("scenarios/single_wheelset.yaml");
+  const auto r = run_railsim("run '" + sc + "' --set duration=0.05 --out '" + dir + "/run'");
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  const std::string summary = railsim::test::read_text(dir + "/run/summary.json");
+  for (const std::string& cmd : {"critical-speed '" + sc + "' --v-min 150 --v-max 160 --v-step 10 --duration 0.5",
+                                "modes '" + sc + "' --v-min 100 --v-max 120 --v-step 10"}) {
+    const auto c = run_railsim(cmd + " --out '" + dir + "/run'");
+    INFO(c.output);
+    CHECK(c.exit_code == 2);
+    CHECK(c.output.find("holds the results of `railsim run`") != std::string::npos);
+  }
+  CHECK(railsim::test::read_text(dir + "/run/summary.json") == summary);
+  const auto again = run_railsim("run '" + sc + "' --set duration=0.05 --out '" + dir + "/run'");
+  CHECK(again.exit_code == 0);
+}

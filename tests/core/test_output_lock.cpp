@@ -27,3 +27,29 @@ TEST_CASE("an output folder has one writer at a time", "[core][lock]") {
   CHECK_NOTHROW(OutputLock(dir));
   CHECK_NOTHROW(OutputLock(test::temp_dir("output_lock") + "/other"));
 }
+
+// A folder holds one analysis's results: the same analysis may write it again
+// (a rerun, a resume), another one is refused naming both (its summary.json
+// would replace the first one's); a folder taken without naming the analysis
+// (or one from before the record) accepts any.
+TEST_CASE("an output folder holds the results of one analysis", "[core][lock]") {
+  const std::string dir = test::temp_dir("output_lock_analysis") + "/out";
+  CHECK_NOTHROW(OutputLock(dir, "run"));
+  CHECK(test::read_text(dir + "/.railsim.analysis") == "run\n");
+  CHECK_NOTHROW(OutputLock(dir, "run"));
+  CHECK_NOTHROW(OutputLock(dir));
+  std::string msg;
+  try {
+    OutputLock other(dir, "critical-speed");
+  } catch (const InputError& e) {
+    msg = e.what();
+  }
+  CHECK(msg == dir + ": holds the results of `railsim run` (" + dir + "/.railsim.analysis); `railsim critical-speed` "
+                     "would replace its summary.json: give another output folder, or remove this one first");
+  // Refused, the folder is not left locked.
+  CHECK_NOTHROW(OutputLock(dir, "run"));
+  const std::string plain = test::temp_dir("output_lock_analysis") + "/plain";
+  CHECK_NOTHROW(OutputLock(plain));
+  CHECK_NOTHROW(OutputLock(plain, "modes"));
+  CHECK_THROWS_AS(OutputLock(plain, "run"), InputError);
+}

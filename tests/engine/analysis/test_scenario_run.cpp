@@ -3,10 +3,13 @@
 // key, value and the usual range, and the run itself goes on.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 #include <string>
 
+#include "core/errors.hpp"
+#include "core/stop_request.hpp"
 #include "engine/analysis/scenario_run.hpp"
 #include "engine/io/scenario.hpp"
 #include "json_support.hpp"
@@ -130,4 +133,52 @@ TEST_CASE("run_scenario: curve_twist at 40, 60, 80 km/h runs to the end with bot
     CHECK(unloading[1] == Approx(unloading[0]).epsilon(0.03));
     if (v < 80) CHECK(pass[0]);
   }
+}
+
+// A stop request (Ctrl-C in the program, KeyboardInterrupt in Python) ends the
+// run between output points: InterruptedError naming the time reached,
+// channels.csv with every row up to it (whole rows, the time column up to
+// that time), summary.json "interrupted" with no running-safety verdict. The
+// request is polled after each output point, so the run stops right after
+// the output at which it was asked for.
+TEST_CASE("run_scenario: a stop request ends the run, keeping what it ran", "[analysis][interrupt]") {
+  Scenario sc = load_scenario(test::source_path("scenarios/single_wheelset.yaml"));
+  sc.duration = 1.0;
+  sc.output_interval = 0.01;
+  const std::string out = test::temp_dir("scenario_run_interrupted");
+  ScenarioRunOptions o;
+  o.out_dir = out;
+  o.keep_channels = true;
+  int polls = 0;
+  o.stop = StopRequest([&] { return ++polls >= 25; });  // asked for at the 25th output after t = 0
+  std::string msg;
+  try {
+    run_scenario(sc, o);
+  } catch (const InterruptedError& e) {
+    msg = e.what();
+  }
+  INFO(msg);
+  CHECK(msg.find("interrupted at t = 0.25 s of 1 s") != std::string::npos);
+  const auto js = test::read_json(out + "/summary.json");
+  CHECK(js["status"] == "interrupted");
+  CHECK(js["interrupted"].get<std::string>().find("t = 0.25 s") != std::string::npos);
+  CHECK(js["running_safety"].is_string());  // not evaluated: no verdict
+  // channels.csv: the header and the rows t = 0, 0.01, ..., 0.25, all whole.
+  std::ifstream in(out + "/channels.csv");
+  std::string header, line, last;
+  std::getline(in, header);
+  const auto cells = std::count(header.begin(), header.end(), ',');
+  int rows = 0;
+  while (std::getline(in, line)) {
+    CHECK(std::count(line.begin(), line.end(), ',') == cells);
+    last = line;
+    ++rows;
+  }
+  CHECK(rows == 26);
+  CHECK(std::stod(last.substr(0, last.find(','))) == Approx(0.25));
+
+  // Never asked for: the run ends normally (the default request never stops).
+  ScenarioRunOptions plain;
+  sc.duration = 0.05;
+  CHECK_NOTHROW(run_scenario(sc, plain));
 }

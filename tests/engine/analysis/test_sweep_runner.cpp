@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "core/errors.hpp"
 #include "engine/analysis/sweep_runner.hpp"
 #include "test_support.hpp"
 
@@ -98,3 +99,36 @@ TEST_CASE("MPI with two ranks writes the same sweep file as threads", "[sweep][m
   CHECK(a == b);
 }
 #endif
+
+// A point stopped by the user (InterruptedError from a stop request): the
+// sweep ends saying how many points are kept and where, and that the same
+// command resumes; the resume computes only the rest.
+TEST_CASE("a sweep stopped by the user says what it kept, and resumes", "[sweep][interrupt]") {
+  const std::string dir = railsim::test::temp_dir("sweep_user_stop");
+  const auto pts = make_points(8);
+  for (const int threads : {1, 2}) {
+    SweepOptions o{dir + "/points" + std::to_string(threads) + ".csv", {"a", "b"}, threads};
+    o.label = "test sweep";
+    std::atomic<int> calls{0};
+    auto stopped_at_3 = [&](const SweepPoint& p) {
+      if (calls++ >= 3) throw railsim::InterruptedError("interrupted at t = 1 s of 6 s");
+      return point_value(p);
+    };
+    std::string msg;
+    try {
+      run_sweep(pts, stopped_at_3, o);
+    } catch (const railsim::InterruptedError& e) {
+      msg = e.what();
+    }
+    INFO(msg);
+    CHECK(msg.find("test sweep: interrupted at t = 1 s of 6 s; 3 of 8 points of this run are kept in " + o.output +
+                   ".part0") != std::string::npos);
+    CHECK(msg.find("the same command in the same folder resumes") != std::string::npos);
+    CHECK(read_finished_points(o.output, 2).size() == 3);
+    std::atomic<int> resumed{0};
+    const auto all = run_sweep(pts, [&](const SweepPoint& p) { ++resumed; return point_value(p); }, o);
+    CHECK(resumed == 5);
+    REQUIRE(all.size() == 8);
+    for (std::size_t i = 0; i < all.size(); ++i) CHECK(all[i].values == point_value(pts[i]));
+  }
+}
