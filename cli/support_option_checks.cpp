@@ -1,10 +1,12 @@
 // Options checks shared by all subcommands; see support_option_checks.hpp.
 #include "cli/support_option_checks.hpp"
 
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <limits>
 
 #include "core/errors.hpp"
 
@@ -24,6 +26,21 @@ const CLI::Validator kFinite(
     },
     "FINITE", "finite");
 
+// A whole-number option: CLI11's own conversion said only "Could not convert"
+// for 1.5 or for a value past the type's range (99999999999 for an int).
+const CLI::Validator kWholeNumber(
+    [](std::string& s) -> std::string {
+      const char* b = s.c_str();
+      char* e = nullptr;
+      errno = 0;
+      const long long v = std::strtoll(b, &e, 10);
+      if (e == b || *e != '\0') return "expected a whole number (got '" + s + "')";
+      if (errno == ERANGE || v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max())
+        return "expected a whole number in the option's range, see --help (got " + s + ")";
+      return {};
+    },
+    "WHOLE", "whole number");
+
 const CLI::Validator kNotEmpty(
     [](std::string& s) -> std::string { return s.empty() ? "expected a file or folder name (got '')" : std::string(); },
     "NONEMPTY", "not empty");
@@ -32,6 +49,8 @@ void add_checks(CLI::App& cmd) {
   for (CLI::Option* o : cmd.get_options()) {
     const std::string type = o->get_type_name();
     if (type.find("FLOAT") != std::string::npos) o->check(kFinite);
+    if ((type.rfind("INT", 0) == 0 || type.rfind("UINT", 0) == 0) && o->get_items_expected_max() == 1)
+      o->check(kWholeNumber);
     if (o->check_lname("out") || o->check_sname("o")) o->check(kNotEmpty);
   }
   for (CLI::App* sub : cmd.get_subcommands([](CLI::App*) { return true; })) add_checks(*sub);

@@ -1,6 +1,8 @@
 // Checks shared by every subcommand's options, applied once in main():
 // a numeric option (CLI11 type FLOAT) must be a finite number ("nan", "inf"
-// refused naming the option: CLI::Range lets NaN through); an output option
+// refused naming the option: CLI::Range lets NaN through); a whole-number
+// option (type INT) must be one that fits (1.5 and 99999999999 named, not
+// CLI11's "Could not convert"); an output option
 // (--out, -o) must not be empty; an unknown subcommand is named in the error.
 #pragma once
 

@@ -242,7 +242,7 @@ TEST_CASE("railsim on bad options: exit 2 naming the option and the range", "[cl
       {"--reduction 5", "critical-speed " + sc + " --reduction 5 --out '" + dir + "/c'",
        {"--reduction: k11 expected a number in (0, 1.5] (got 5)"}},
       {"--contact-audit 1e8", "run " + sc + " --contact-audit 100000000 --out '" + dir + "/r'",
-       {"--contact-audit 100000000: the number of contact states must lie in [1, 10000]"}},
+       {"--contact-audit: expected a number in [1, 10000] (got 100000000)"}},
       {"--from -1e300 on track", "track '" + test::source_path("tracks/curve_R300.yaml") + "' --from -1e300 -o '" +
                                      dir + "/t.csv'",
        {"--from: expected a distance in [0, 710] m", "got -1e+300"}},

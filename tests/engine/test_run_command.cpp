@@ -122,7 +122,8 @@ TEST_CASE("railsim run: bad scenario exits 2, numerical failure exits 3", "[engi
 TEST_CASE("railsim run --contact-audit: bad counts and tolerances exit 2 naming the option", "[engine][cli][audit]") {
   const std::string out = test::temp_dir("run_audit_bad");
   const std::string base = "run " + test::source_path("scenarios/single_wheelset.yaml") + " --out " + out + " ";
-  for (const char* n : {"0", "-5", "10001"}) {
+  // Past the int type too (CLI11 said only "Could not convert"), and not whole.
+  for (const char* n : {"0", "-5", "10001", "99999999999", "1e20"}) {
     const auto r = test::run_railsim(base + "--contact-audit " + n);
     INFO(r.output);
     CHECK(r.exit_code == 2);
@@ -134,6 +135,28 @@ TEST_CASE("railsim run --contact-audit: bad counts and tolerances exit 2 naming 
     INFO(r.output);
     CHECK(r.exit_code == 2);
     CHECK(r.output.find("--audit-tolerance") != std::string::npos);
+  }
+  {
+    const auto r = test::run_railsim(base + "--contact-audit 2.5");
+    INFO(r.output);
+    CHECK(r.exit_code == 2);
+    CHECK(r.output.find("--contact-audit: expected a whole number (got '2.5')") != std::string::npos);
+  }
+  // The audit's settings without the audit were ignored silently.
+  for (const char* opt : {"--audit-tolerance 5", "--audit-threads 2"}) {
+    const auto r = test::run_railsim(base + opt + " --set duration=0.05");
+    INFO(r.output);
+    CHECK(r.exit_code == 2);
+    CHECK(r.output.find(std::string(opt).substr(0, std::string(opt).find(' ')) +
+                        ": applies to the contact audit; give --contact-audit N") != std::string::npos);
+  }
+  // Another whole-number option past int: named, not "Could not convert".
+  for (const char* t : {"99999999999", "65", "1.5"}) {
+    const auto r = test::run_railsim(base + "--contact-audit 5 --audit-threads " + t);
+    INFO(r.output);
+    CHECK(r.exit_code == 2);
+    CHECK(r.output.find("--audit-threads") != std::string::npos);
+    CHECK(r.output.find("Could not convert") == std::string::npos);
   }
   // A run whose contact has no patch shape (prescribed creep coefficients): bad input, said so.
   const auto r = test::run_railsim(base + "--contact-audit 5 --set duration=0.05");
