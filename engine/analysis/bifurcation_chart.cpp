@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "engine/analysis/critical_speed_study.hpp"
+
 namespace railsim::engine {
 
 namespace {
@@ -48,7 +50,7 @@ void add_branch(results::Chart& c, const std::vector<BifurcationPoint>& pts, Bra
   PointState prev = PointState::centred;
   for (const BifurcationPoint* p : b) {
     const PointState s = point_state(*p, o);
-    const double x = p->speed * kKmh, y = p->amplitude * 1e3;
+    const double x = given_kmh(p->speed), y = p->amplitude * 1e3;
     if (s == PointState::settled) {
       if (!settled.x.empty() && prev != PointState::settled) settled.x.push_back(nan), settled.y.push_back(nan);
       settled.x.push_back(x), settled.y.push_back(y);
@@ -74,11 +76,11 @@ void add_branch(results::Chart& c, const std::vector<BifurcationPoint>& pts, Bra
   if (down && std::isfinite(critical) && std::isfinite(fold_amplitude)) {
     // The fold: the branch ends at the critical speed; below it the run falls back to the centred running.
     results::ChartSeries jump = series("", color, "", "--");
-    jump.x = {critical * kKmh, critical * kKmh};
+    jump.x = {given_kmh(critical), given_kmh(critical)};
     jump.y = {fold_amplitude * 1e3, 0.0};
     c.series.push_back(jump);
     results::ChartSeries foot = series("", color, "v", "", false, 5);
-    foot.x = {critical * kKmh};
+    foot.x = {given_kmh(critical)};
     foot.y = {0.0};
     c.series.push_back(foot);
   }
@@ -140,7 +142,7 @@ results::Chart bifurcation_chart(const std::vector<BifurcationCurve>& curves, co
       c.lines.push_back({cv.linear_critical_speed * kKmh, "linear critical speed " + kmh_text(cv.linear_critical_speed),
                          "r", true});
     if (std::isfinite(cv.result->nonlinear_critical_speed))
-      c.lines.push_back({cv.result->nonlinear_critical_speed * kKmh,
+      c.lines.push_back({given_kmh(cv.result->nonlinear_critical_speed),
                          "nonlinear critical speed " + kmh_text(cv.result->nonlinear_critical_speed), "g", true});
   }
   char buf[64];

@@ -21,16 +21,6 @@ namespace {
 
 using results::Json;
 
-// A setting echoed in the units it is given in: rounded to 12 significant
-// digits, so that the round trip km/h -> m/s -> km/h (or mm -> m -> mm) gives
-// back the number as given.
-double as_given(double si, double factor) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.12g", si * factor);
-  return std::strtod(buf, nullptr);
-}
-double given_kmh(double v) { return as_given(v, 3.6); }
-double given_mm(double x) { return as_given(x, 1e3); }
 
 Json number_or_null(double v, double factor = 1.0) { return std::isnan(v) ? Json(nullptr) : Json(v * factor); }
 
@@ -39,6 +29,13 @@ double change_percent(double v, double v0) {
 }
 
 }  // namespace
+
+double as_given(double si, double factor) {
+  if (!std::isfinite(si)) return si * factor;
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.12g", si * factor);
+  return std::strtod(buf, nullptr);
+}
 
 CriticalSpeedMethod parse_critical_speed_method(const std::string& name, const std::string& where) {
   if (name == "bifurcation") return CriticalSpeedMethod::bifurcation;
@@ -180,7 +177,7 @@ Json critical_speed_summary(const Scenario& sc, const CriticalSpeedStudySettings
   s.set("wheelset_model", wheelset_model_name(sc.model.wheelset_model));
   s.set("saturation_law", saturation_law(sc));
   s.set("record", scenario_record(sc));
-  s.set("critical_speed_kmh", number_or_null(o.critical, 3.6));
+  s.set("critical_speed_kmh", number_or_null(given_kmh(o.critical)));  // a speed of the sweep
   s.set("linear_critical_speed_kmh", number_or_null(o.linear, 3.6));
   s.set("speed_range_kmh", Json::array().push(given_kmh(st.v_min)).push(given_kmh(st.v_max)));
   Json set = Json::object();
@@ -220,7 +217,7 @@ CriticalSpeedWithBaseline critical_speed_with_baseline(const Scenario& base, con
   r.change_percent = change_percent(r.outcome.critical, r.unreduced.critical);
   r.linear_change_percent = change_percent(r.outcome.linear, r.unreduced.linear);
   Json b = Json::object();
-  b.set("critical_speed_kmh", number_or_null(r.unreduced.critical, 3.6));
+  b.set("critical_speed_kmh", number_or_null(given_kmh(r.unreduced.critical)));
   b.set("linear_critical_speed_kmh", number_or_null(r.unreduced.linear, 3.6));
   if (!std::isnan(r.change_percent)) b.set("critical_speed_change_percent", r.change_percent);
   if (!std::isnan(r.linear_change_percent)) b.set("linear_critical_speed_change_percent", r.linear_change_percent);

@@ -30,6 +30,13 @@ enum class CriticalSpeedMethod { bifurcation, ramping };
 CriticalSpeedMethod parse_critical_speed_method(const std::string& name, const std::string& where);
 const char* critical_speed_method_name(CriticalSpeedMethod m);
 
+// A speed or length echoed in the unit it is given in (km/h, mm): si * factor
+// rounded to 12 significant digits, so that the round trip km/h -> m/s -> km/h
+// gives back the number as given (240 km/h, not 240.00000000000003). NaN stays NaN.
+double as_given(double si, double factor);
+inline double given_kmh(double v_m_s) { return as_given(v_m_s, 3.6); }
+inline double given_mm(double x_m) { return as_given(x_m, 1e3); }
+
 struct CriticalSpeedStudySettings {
   CriticalSpeedMethod method = CriticalSpeedMethod::bifurcation;
   double v_min = 80.0 / 3.6, v_max = 300.0 / 3.6, v_step = 20.0 / 3.6;  // [m/s]

@@ -123,15 +123,15 @@ py::dict critical_speed(const engine::Scenario& base, const std::string& method,
   d["contact_description"] = sc.model.coupling.describe();
   d["reduction"] = contact::describe_reduction(sc.model.coupling.options().reduction);
   py::dict settings;
-  settings["v_min_kmh"] = st.v_min * 3.6, settings["v_max_kmh"] = st.v_max * 3.6;
-  settings["threshold_mm"] = st.threshold * 1e3;
+  settings["v_min_kmh"] = engine::given_kmh(st.v_min), settings["v_max_kmh"] = engine::given_kmh(st.v_max);
+  settings["threshold_mm"] = engine::given_mm(st.threshold);
   if (st.method == engine::CriticalSpeedMethod::bifurcation) {
     std::vector<double> v, amp, freq, growth;
     std::vector<std::string> branch, state;
     std::vector<bool> failed, numerical_failure, continued;
     const engine::BifurcationOptions bo = engine::bifurcation_options(st);
     for (const auto& p : r.bifurcation.points) {
-      v.push_back(p.speed * 3.6), amp.push_back(p.amplitude * 1e3), freq.push_back(p.frequency);
+      v.push_back(engine::given_kmh(p.speed)), amp.push_back(p.amplitude * 1e3), freq.push_back(p.frequency);
       growth.push_back(p.growth), branch.push_back(engine::branch_name(p.branch)), failed.push_back(p.failed);
       numerical_failure.push_back(p.numerical_failure);
       state.push_back(engine::point_state_name(engine::point_state(p, bo)));
@@ -146,9 +146,9 @@ py::dict critical_speed(const engine::Scenario& base, const std::string& method,
     // No critical speed because of a numerical failure or runs too short: why (None: the verdict stands).
     d["undetermined"] = r.bifurcation.undetermined.empty() ? py::object(py::none())
                                                            : py::object(py::str(r.bifurcation.undetermined));
-    settings["v_step_kmh"] = st.v_step * 3.6, settings["duration_s"] = st.duration;
-    settings["large_disturbance_mm"] = st.large_disturbance * 1e3;
-    settings["small_disturbance_mm"] = st.small_disturbance * 1e3;
+    settings["v_step_kmh"] = engine::given_kmh(st.v_step), settings["duration_s"] = st.duration;
+    settings["large_disturbance_mm"] = engine::given_mm(st.large_disturbance);
+    settings["small_disturbance_mm"] = engine::given_mm(st.small_disturbance);
     settings["up_branch"] = st.up_branch, settings["continuation"] = st.continuation;
   } else {
     const engine::RampingResult& rr = r.ramping;
@@ -162,10 +162,10 @@ py::dict critical_speed(const engine::Scenario& base, const std::string& method,
     d["hunting_at_end"] = rr.hunting_at_end;
     d["derailment"] = rr.derailment.empty() ? py::object(py::none()) : py::object(py::str(rr.derailment));
     d["left_model_range"] = rr.range_stop.empty() ? py::object(py::none()) : py::object(py::str(rr.range_stop));
-    settings["start_speed_kmh"] = st.ramp_start * 3.6, settings["disturbance_mm"] = st.ramp_disturbance * 1e3;
+    settings["start_speed_kmh"] = engine::given_kmh(st.ramp_start), settings["disturbance_mm"] = engine::given_mm(st.ramp_disturbance);
     settings["deceleration_m_s2"] = st.deceleration;
   }
-  d["critical_speed_kmh"] = std::isnan(r.critical) ? py::object(py::none()) : py::object(py::float_(r.critical * 3.6));
+  d["critical_speed_kmh"] = std::isnan(r.critical) ? py::object(py::none()) : py::object(py::float_(engine::given_kmh(r.critical)));
   d["linear_critical_speed_kmh"] =
       std::isnan(r.linear) ? py::object(py::none()) : py::object(py::float_(r.linear * 3.6));
   d["settings"] = settings;

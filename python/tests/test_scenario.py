@@ -271,3 +271,14 @@ def test_ctrl_c_stops_a_sweep_which_then_resumes(tmp_path):
     clean = railsim.critical_speed(sc, out=tmp_path / "clean", **kw)
     assert resumed["critical_speed_kmh"] == clean["critical_speed_kmh"]
     assert (tmp_path / "stopped" / "bifurcation.csv").read_text() == (tmp_path / "clean" / "bifurcation.csv").read_text()
+
+
+def test_speeds_in_km_h_are_the_numbers_given(tmp_path):
+    # 240 km/h -> 66.666... m/s -> 240.00000000000003 km/h: echoed as given.
+    sc = railsim.load_scenario(source("scenarios/single_wheelset.yaml"))
+    r = railsim.critical_speed(sc, v_min_kmh=100, v_max_kmh=240, v_step_kmh=20, duration=0.5, threads=1,
+                               out=tmp_path)
+    assert set(r["points"]["speed_kmh"]) == {100.0, 120.0, 140.0, 160.0, 180.0, 200.0, 220.0, 240.0}
+    assert r["settings"]["v_max_kmh"] == 240.0
+    assert r["settings"]["v_step_kmh"] == 20.0
+    assert "240.00000000000003" not in (tmp_path / "bifurcation.csv").read_text() + str(r)
