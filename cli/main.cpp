@@ -5,8 +5,8 @@
 // "railsim X.Y.Z" (as help2man expects); `railsim version` says more.
 // Every numeric option is refused unless finite (cli/support_option_checks.hpp).
 // SIGXFSZ is ignored, so a file past the size limit is a failed write (exit 2).
-// SIGINT / SIGTERM stop a run or sweep between output points, keeping what it
-// finished (cli/support_interrupt.hpp): exit 130 / 143.
+// SIGINT / SIGTERM stop `run` and `critical-speed` between output points,
+// keeping what they finished (cli/support_interrupt.hpp): exit 130 / 143.
 // Under mpirun, MPI is started here for the whole run (engine::MpiSession).
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
@@ -92,8 +92,6 @@ int main(int argc, char** argv) {
   spdlog::set_level(spdlog::level::from_str(log_level));
   spdlog::set_pattern("[%H:%M:%S.%e] [%^%l%$] %v");
 
-  // Ctrl-C / SIGTERM: the running command stops between output points and keeps what it finished.
-  railsim::cli::install_interrupt_handlers();
   try {
     const int code = run ? run() : railsim::kExitSuccess;
     // Printed results count as output: a full disk behind

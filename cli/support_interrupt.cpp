@@ -23,14 +23,15 @@ extern "C" void on_stop_signal(int sig) {
 
 }  // namespace
 
-void install_interrupt_handlers() {
+StopRequest interrupt_request() {
   // A signal the program was started ignoring stays ignored (a background
   // job of a shell script ignores SIGINT: Ctrl-C at the terminal is not for it).
-  for (const int sig : {SIGINT, SIGTERM})
-    if (std::signal(sig, on_stop_signal) == SIG_IGN) std::signal(sig, SIG_IGN);
-}
-
-StopRequest interrupt_request() {
+  static const bool installed = [] {
+    for (const int sig : {SIGINT, SIGTERM})
+      if (std::signal(sig, on_stop_signal) == SIG_IGN) std::signal(sig, SIG_IGN);
+    return true;
+  }();
+  (void)installed;
   return StopRequest([] { return g_signal.load(std::memory_order_relaxed) != 0; });
 }
 
