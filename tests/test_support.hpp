@@ -2,6 +2,7 @@
 // the railsim program and capture its exit code and output.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <cstdlib>
@@ -30,6 +31,28 @@ inline std::string source_path(const std::string& rel) { return std::string(RAIL
 inline std::string read_text(const std::string& path) {
   std::ifstream f(path, std::ios::binary);
   return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
+}
+
+// The data rows of a CSV file (after its header): how many, how many have
+// another number of cells than the header (a torn row), and the last one.
+struct CsvRows {
+  int rows = 0;
+  int torn = 0;
+  std::string last;
+  double last_first_cell() const { return last.empty() ? 0.0 : std::stod(last.substr(0, last.find(','))); }
+};
+inline CsvRows csv_rows(const std::string& path) {
+  CsvRows r;
+  std::ifstream in(path);
+  std::string header, line;
+  std::getline(in, header);
+  const auto cells = std::count(header.begin(), header.end(), ',');
+  while (std::getline(in, line)) {
+    if (std::count(line.begin(), line.end(), ',') != cells) ++r.torn;
+    r.last = line;
+    ++r.rows;
+  }
+  return r;
 }
 
 // Prefix for `mpirun ...` command lines. Under AddressSanitizer, OpenMPI's own

@@ -40,21 +40,14 @@ TEST_CASE("railsim run stopped by SIGTERM keeps its rows and says so in summary.
   CHECK(js["status"] == "interrupted");
   CHECK(js["running_safety"].is_string());
   // channels.csv: whole rows, the last at the time the message names.
-  std::ifstream in(out + "/channels.csv");
-  std::string header, line, last;
-  std::getline(in, header);
-  const auto cells = std::count(header.begin(), header.end(), ',');
-  int rows = 0;
-  while (std::getline(in, line)) {
-    CHECK(std::count(line.begin(), line.end(), ',') == cells);
-    last = line, ++rows;
-  }
-  CHECK(rows > 1);
+  const test::CsvRows rows = test::csv_rows(out + "/channels.csv");
+  CHECK(rows.torn == 0);
+  CHECK(rows.rows > 1);
   const std::string said = js["interrupted"].get<std::string>();
   const auto at = said.find("t = ");
   REQUIRE(at != std::string::npos);
   const double t_said = std::stod(said.substr(at + 4));
-  CHECK(std::stod(last.substr(0, last.find(','))) == Approx(t_said).margin(1e-5));
+  CHECK(rows.last_first_cell() == Approx(t_said).margin(1e-5));
   CHECK(t_said < 240.0);
   // compare-yq refuses the interrupted run (it has no verdict).
   const auto yq = test::run_railsim("compare-yq '" + scenario + "' '" + out + "' --out '" + dir + "/yq'");

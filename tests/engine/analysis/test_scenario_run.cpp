@@ -164,18 +164,10 @@ TEST_CASE("run_scenario: a stop request ends the run, keeping what it ran", "[an
   CHECK(js["interrupted"].get<std::string>().find("t = 0.25 s") != std::string::npos);
   CHECK(js["running_safety"].is_string());  // not evaluated: no verdict
   // channels.csv: the header and the rows t = 0, 0.01, ..., 0.25, all whole.
-  std::ifstream in(out + "/channels.csv");
-  std::string header, line, last;
-  std::getline(in, header);
-  const auto cells = std::count(header.begin(), header.end(), ',');
-  int rows = 0;
-  while (std::getline(in, line)) {
-    CHECK(std::count(line.begin(), line.end(), ',') == cells);
-    last = line;
-    ++rows;
-  }
-  CHECK(rows == 26);
-  CHECK(std::stod(last.substr(0, last.find(','))) == Approx(0.25));
+  const test::CsvRows rows = test::csv_rows(out + "/channels.csv");
+  CHECK(rows.torn == 0);
+  CHECK(rows.rows == 26);
+  CHECK(rows.last_first_cell() == Approx(0.25));
 
   // Never asked for: the run ends normally (the default request never stops).
   ScenarioRunOptions plain;
