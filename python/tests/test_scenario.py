@@ -217,17 +217,29 @@ def test_output_folder_lock_is_the_programs(tmp_path):
     assert (out / "summary.json").exists()
 
 
-def _interrupt_after(seconds):
-    """SIGINT to this process after `seconds` (as Ctrl-C at the terminal)."""
+@pytest.fixture
+def ctrl_c():
+    """Python's own Ctrl-C handler for the test (a process started in the
+    background of a shell inherits SIGINT ignored, and Python then leaves it
+    so), and a function sending SIGINT to this process after some seconds."""
     import os
     import signal
     import threading
-    t = threading.Timer(seconds, os.kill, (os.getpid(), signal.SIGINT))
-    t.start()
-    return t
+    before = signal.signal(signal.SIGINT, signal.default_int_handler)
+    timers = []
+
+    def after(seconds):
+        t = threading.Timer(seconds, os.kill, (os.getpid(), signal.SIGINT))
+        timers.append(t)
+        t.start()
+
+    yield after
+    for t in timers:
+        t.cancel()
+    signal.signal(signal.SIGINT, before)
 
 
-def test_ctrl_c_stops_a_run_and_keeps_its_rows(tmp_path):
+def test_ctrl_c_stops_a_run_and_keeps_its_rows(tmp_path, ctrl_c):
     # Ctrl-C during run(): KeyboardInterrupt soon after (not at the run's
     # end), channels.csv whole up to the time summary.json names.
     import time
@@ -237,12 +249,9 @@ def test_ctrl_c_stops_a_run_and_keeps_its_rows(tmp_path):
     sc = railsim.scenario(spec, base_dir=source("scenarios"))
     full = sc.duration
     t0 = time.monotonic()
-    timer = _interrupt_after(1.5)
-    try:
-        with pytest.raises(KeyboardInterrupt):
-            railsim.run(sc, out=tmp_path)
-    finally:
-        timer.cancel()
+    ctrl_c(1.5)
+    with pytest.raises(KeyboardInterrupt):
+        railsim.run(sc, out=tmp_path)
     waited = time.monotonic() - t0
     summary = json.loads((tmp_path / "summary.json").read_text())
     assert summary["status"] == "interrupted"
@@ -256,17 +265,14 @@ def test_ctrl_c_stops_a_run_and_keeps_its_rows(tmp_path):
     assert waited < 30.0  # stopped within the poll period, not after the whole run
 
 
-def test_ctrl_c_stops_a_sweep_which_then_resumes(tmp_path):
+def test_ctrl_c_stops_a_sweep_which_then_resumes(tmp_path, ctrl_c):
     sc = railsim.scenario(source("tests/data/scenarios/single_wheelset_flange.yaml"))  # a file name: read
     # 8 runs of 400 s simulated, four above the critical speed (hunting: no early
     # end, about 1.6 s each here): stopped in the first of those.
     kw = dict(v_min_kmh=150, v_max_kmh=180, v_step_kmh=10, duration=400, threads=1)
-    timer = _interrupt_after(1.5)
-    try:
-        with pytest.raises(KeyboardInterrupt):
-            railsim.critical_speed(sc, out=tmp_path / "stopped", **kw)
-    finally:
-        timer.cancel()
+    ctrl_c(1.5)
+    with pytest.raises(KeyboardInterrupt):
+        railsim.critical_speed(sc, out=tmp_path / "stopped", **kw)
     resumed = railsim.critical_speed(sc, out=tmp_path / "stopped", **kw)
     clean = railsim.critical_speed(sc, out=tmp_path / "clean", **kw)
     assert resumed["critical_speed_kmh"] == clean["critical_speed_kmh"]
