@@ -49,8 +49,11 @@ int run_compare_yq(const CompareYqArgs& a) {
   const engine::Scenario sc = engine::load_scenario(a.scenario);
   std::vector<std::string> labels;
   if (!a.labels.empty()) {
-    std::stringstream ss(a.labels);
-    for (std::string l; std::getline(ss, l, ',');) labels.push_back(l);
+    // Every comma separates two labels ("a," is two, the second empty).
+    std::size_t from = 0;
+    for (std::size_t at; (at = a.labels.find(',', from)) != std::string::npos; from = at + 1)
+      labels.push_back(a.labels.substr(from, at - from));
+    labels.push_back(a.labels.substr(from));
   }
   const engine::YqComparison c = engine::compare_yq(sc, a.runs, labels, a.wheelset);
   {

@@ -5,6 +5,7 @@
 #include <spdlog/spdlog.h>
 
 #include <cmath>
+#include <string>
 
 #include "cli/commands.hpp"
 #include "cli/support_geometry.hpp"
@@ -42,8 +43,16 @@ void register_geometry(CLI::App& app, CommandRunner& run) {
       for (std::size_t r = t.rows(); r-- > 0;)
         if (t.value(r, 0) <= 0 && std::isnan(yr) && std::abs(t.value(r, ra)) > lim) yr = t.value(r, 0);
       std::printf("wrote %s (%zu rows)\n", out->c_str(), t.rows());
-      std::printf("flange contact (angle > 30 deg): left wheel from y = %+.1f mm, right wheel from y = %+.1f mm\n",
-                  yl * 1e3, yr * 1e3);
+      // A wheel that meets no contact angle above 30 deg within the table's range has none to report.
+      const double y_lo = t.value(0, 0), y_hi = t.value(t.rows() - 1, 0);
+      auto say = [](double y, double edge) {
+        char buf[64];
+        if (std::isnan(y)) std::snprintf(buf, sizeof buf, "none up to y = %+.1f mm", edge * 1e3);
+        else std::snprintf(buf, sizeof buf, "from y = %+.1f mm", y * 1e3);
+        return std::string(buf);
+      };
+      std::printf("flange contact (angle > 30 deg): left wheel %s, right wheel %s\n", say(yl, y_hi).c_str(),
+                  say(yr, y_lo).c_str());
       return 0;
     };
   });

@@ -104,7 +104,7 @@ int main(int argc, char** argv) {
     fatal(spdlog::level::err, e.what());
     return railsim::kExitBadInput;
   } catch (const railsim::InterruptedError& e) {
-    fatal(spdlog::level::warn, std::string(e.what()) + " (stopped by a signal; what was finished is written)");
+    fatal(spdlog::level::warn, std::string(e.what()) + " (stopped by a signal)");
     return railsim::cli::interrupt_exit_code();
   } catch (const railsim::NumericalError& e) {
     fatal(spdlog::level::err, std::string("numerical failure: ") + e.what());

@@ -5,11 +5,13 @@
 
 namespace railsim::track {
 
-Track::Track(std::string name, Alignment alignment, IrregularitySet irregularities, double gauge)
+Track::Track(std::string name, Alignment alignment, IrregularitySet irregularities, double gauge,
+             bool gauge_given)
     : name_(std::move(name)),
       alignment_(std::move(alignment)),
       irregularities_(std::move(irregularities)),
-      gauge_(gauge) {}
+      gauge_(gauge),
+      gauge_given_(gauge_given) {}
 
 double Track::cant_deficiency(double s, double speed) const {
   const AlignmentState a = alignment_.at(s);

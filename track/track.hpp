@@ -35,7 +35,9 @@ struct TrackState : AlignmentState {
 
 class Track {
  public:
-  Track(std::string name, Alignment alignment, IrregularitySet irregularities, double gauge = 1.435);
+  // gauge_given: the track file states its gauge (else 1.435 m by default).
+  Track(std::string name, Alignment alignment, IrregularitySet irregularities, double gauge = 1.435,
+        bool gauge_given = false);
   Track(Track&&) noexcept = default;
   Track& operator=(Track&&) noexcept = default;
   Track(const Track&) = delete;
@@ -63,6 +65,7 @@ class Track {
   double length() const { return alignment_.length(); }
   double rail_spacing() const { return alignment_.rail_spacing(); }  // 2b [m]
   double gauge() const { return gauge_; }                            // nominal gauge [m]
+  bool gauge_given() const { return gauge_given_; }                  // stated by the track file
   const Alignment& alignment() const { return alignment_; }
   const IrregularitySet& irregularities() const { return irregularities_; }
 
@@ -71,6 +74,7 @@ class Track {
   Alignment alignment_;
   IrregularitySet irregularities_;
   double gauge_;
+  bool gauge_given_ = false;
 };
 
 }  // namespace railsim::track

@@ -196,7 +196,7 @@ Track load_track(const InputNode& root, const std::string& base_dir, const std::
       }
     }
   }
-  return Track(name, std::move(alignment), std::move(irregularities), gauge);
+  return Track(name, std::move(alignment), std::move(irregularities), gauge, root.has("gauge"));
 }
 
 }  // namespace railsim::track

@@ -132,10 +132,20 @@ RawProfile read_simpack(const std::string& path, std::istream& in) {
         fail(path + ":" + std::to_string(lineno), "key 'units.len.f': expected a positive number (got '" + val + "')");
       raw.unit = 1.0 / f;
       raw.unit_from = "key 'units.len.f' on line " + std::to_string(lineno);
-    } else if (key == "mirror.y") {
-      raw.mirror_y = std::atoi(val.c_str()) == 1;
-    } else if (key == "mirror.z") {
-      raw.mirror_z = std::atoi(val.c_str()) == 1;
+    } else if (key == "mirror.y" || key == "mirror.z") {
+      if (val != "0" && val != "1")
+        fail(path + ":" + std::to_string(lineno), "key '" + key + "': expected 0 (no mirroring) or 1 (got '" + val + "')");
+      (key == "mirror.y" ? raw.mirror_y : raw.mirror_z) = val == "1";
+    } else if (key == "shift.y" || key == "shift.z" || key == "rotate") {
+      // SIMPACK's processing steps 2 and 3; railsim applies only the mirroring
+      // and the unit: a non-zero value would be ignored silently.
+      char* end = nullptr;
+      const double v = std::strtod(val.c_str(), &end);
+      if (end == val.c_str() || v != 0.0)
+        fail(path + ":" + std::to_string(lineno), "key '" + key + "' = " + val +
+                                                      ": railsim does not apply SIMPACK's shift and rotation (only "
+                                                      "mirror.y, mirror.z and units.len.f); apply it to the points or "
+                                                      "set it to 0");
     }
   }
   if (raw.unit == 0.0) {
@@ -212,10 +222,16 @@ Profile::Profile(ProfileKind kind, std::string source, std::vector<double> y, st
     if (std::hypot(y_[i] - y_[i - 1], z_[i] - z_[i - 1]) < 1e-9)
       fail(where_line(source_, lines, i), "duplicated profile point (same as the previous point, " +
                                               fmt_mm(y_[i]) + ", " + fmt_mm(z_[i]) + ")");
-  // Self-intersection: any two non-adjacent segments crossing.
+  // Self-intersection: any two non-adjacent segments crossing. Segment j
+  // can meet segment i only while some later point lies at or left of
+  // segment i's right end: the suffix minimum of y ends the search (linear
+  // for a profile sorted in y; it was quadratic, 34 s for 320,000 points).
+  std::vector<double> y_min_from(n);
+  for (std::size_t k = n; k-- > 0;) y_min_from[k] = k + 1 < n ? std::min(y_[k], y_min_from[k + 1]) : y_[k];
   for (std::size_t i = 0; i + 1 < n; ++i) {
     const double ymin_i = std::min(y_[i], y_[i + 1]), ymax_i = std::max(y_[i], y_[i + 1]);
     for (std::size_t j = i + 2; j + 1 < n; ++j) {
+      if (y_min_from[j] > ymax_i) break;  // every later segment lies right of segment i
       if (std::max(y_[j], y_[j + 1]) < ymin_i || std::min(y_[j], y_[j + 1]) > ymax_i) continue;
       if (segments_cross(y_[i], z_[i], y_[i + 1], z_[i + 1], y_[j], z_[j], y_[j + 1], z_[j + 1]))
         fail(where_line(source_, lines, j),

@@ -129,7 +129,12 @@ CriticalSpeedOutcome analyse_critical_speed(const Scenario& sc, const CriticalSp
     out.fold_amplitude = out.bifurcation.fold_amplitude;
     out.fold_frequency = out.bifurcation.fold_frequency;
   } else {
-    out.ramping = ramping(sc, ramping_options(s));
+    try {
+      out.ramping = ramping(sc, ramping_options(s));
+    } catch (const InterruptedError& e) {
+      throw InterruptedError(std::string("ramping: ") + e.what() +
+                             "; a ramp is one run, nothing of it is kept: start it again");
+    }
     out.critical = out.ramping.critical_speed;
     out.fold_amplitude = out.ramping.critical_amplitude;
   }

@@ -846,8 +846,10 @@ ScenarioRunResult run_scenario(const Scenario& sc, const ScenarioRunOptions& o) 
     summary.set("interrupted", std::string(e.what()) + "; channels.csv holds the run up to it");
     summary.set("warnings", scenario_warnings(sc));
     summary.set("running_safety", "not evaluated: the run was interrupted");
-    if (files) summary.write_file(o.out_dir + "/summary.json");
-    throw;
+    if (!files) throw;
+    summary.write_file(o.out_dir + "/summary.json");
+    throw InterruptedError(std::string(e.what()) + "; " + o.out_dir + "/channels.csv holds the run up to it, " +
+                           o.out_dir + "/summary.json says so");
   } catch (const DerailmentError& e) {
     // Physics: the running safety up to the derailment, failed because of it.
     if (csv) csv->close();

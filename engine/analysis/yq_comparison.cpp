@@ -102,6 +102,14 @@ YqComparison compare_yq(const Scenario& sc, const std::vector<std::string>& dirs
   if (!labels.empty() && labels.size() != dirs.size())
     throw InputError("--labels: " + std::to_string(labels.size()) + " labels for " + std::to_string(dirs.size()) +
                      " run folders");
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    if (labels[i].find_first_not_of(' ') == std::string::npos)
+      throw InputError("--labels: label " + std::to_string(i + 1) + " is empty (give one per run folder)");
+    for (std::size_t k = 0; k < i; ++k)
+      if (labels[k] == labels[i])
+        throw InputError("--labels: '" + labels[i] + "' is given twice (labels " + std::to_string(k + 1) + " and " +
+                         std::to_string(i + 1) + "): the rows could not be told apart");
+  }
   const RunHistory layout(sc.model);
   if (layout.wheelsets.empty()) throw InputError(sc.file + ": the scenario has no wheelsets");
   std::size_t w = 0;

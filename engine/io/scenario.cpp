@@ -231,7 +231,7 @@ contact::Material read_material(const InputNode& mat, CouplingOptions& co, std::
 
 // Step: the contact section (geometry by registry, tangential model, material,
 // reductions, creep coefficients or patch).
-ContactSection read_contact(const InputNode& c, const std::string& base, Scenario& sc) {
+ContactSection read_contact(const InputNode& c, const std::string& base, const track::Track& track, Scenario& sc) {
   c.allow_only({"geometry", "normal", "tangential", "saturation", "material", "reduction", "creep_coefficients",
                 "patch", "spin", "static_approach", "normal_damping"});
   ContactSection cs;
@@ -239,7 +239,8 @@ ContactSection read_contact(const InputNode& c, const std::string& base, Scenari
   if (auto mat = c.find("material")) co.material = read_material(*mat, co, sc.warnings);
   const InputNode gn = c.at("geometry");
   const GeometryKind& kind = find_geometry_kind(gn);
-  cs.geometry = kind.read(gn, GeometryReadContext{base, co.material, &sc.warnings});
+  cs.geometry = kind.read(gn, GeometryReadContext{base, co.material, &sc.warnings,
+                                                  track.gauge_given() ? track.gauge() : 0.0});
   // The patch shape of distributed contact (profiles; wheel_rail/strip_patches.hpp).
   if (c.choice_or("normal", "hertz", {"hertz", "semi_hertz"}) == "semi_hertz") {
     if (!cs.geometry->distributed())
@@ -473,7 +474,7 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
   read_motion(root, track->length(), sc);
   read_wheelset_model(root, m);
   read_track_flexibility(root, track->length(), m);
-  ContactSection contact = read_contact(root.at("contact"), base, sc);
+  ContactSection contact = read_contact(root.at("contact"), base, *track, sc);
   const ContactGeometry& geo = *contact.geometry;
   sc.geometry_description = geo.describe();
   if (geo.max_shift() >= 3e-3)

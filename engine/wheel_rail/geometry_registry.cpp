@@ -8,6 +8,7 @@
 #include <tuple>
 
 #include "contact/geometry/profile.hpp"
+#include "core/errors.hpp"
 #include "engine/wheel_rail/conical_geometry.hpp"
 #include "engine/wheel_rail/geometry_table.hpp"
 #include "engine/wheel_rail/profile_geometry.hpp"
@@ -18,7 +19,19 @@ namespace {
 using config::InputNode;
 namespace fs = std::filesystem;
 
-std::shared_ptr<const ContactGeometry> read_conical(const InputNode& g, const GeometryReadContext&) {
+// Geometries that carry their own gauge (a table's rows, cones) cannot take
+// the track file's: a gauge other than the standard one is said in the
+// scenario's warnings (the run goes on with the geometry as it is).
+void warn_track_gauge_unused(const InputNode& g, const GeometryReadContext& ctx, const char* kind) {
+  if (!(ctx.track_gauge > 0.0) || std::abs(ctx.track_gauge - 1.435) <= 5e-4 || !ctx.warnings) return;
+  ctx.warnings->push_back(g.where() + ": the track file's gauge " + config::format_number(ctx.track_gauge) +
+                          " m is not used by the '" + kind + "' contact geometry, which stands for its own gauge "
+                          "(use type: profiles to run on the track's gauge)");
+  spdlog::warn("{}", ctx.warnings->back());
+}
+
+std::shared_ptr<const ContactGeometry> read_conical(const InputNode& g, const GeometryReadContext& ctx) {
+  warn_track_gauge_unused(g, ctx, "conical");
   g.allow_only({"type", "r0", "conicity", "l0", "contact_angle", "flange_clearance", "flange_stiffness", "max_shift",
                 "curvatures"});
   ConicalParams p;
@@ -39,6 +52,7 @@ std::shared_ptr<const ContactGeometry> read_conical(const InputNode& g, const Ge
 
 std::shared_ptr<const ContactGeometry> read_table(const InputNode& g, const GeometryReadContext& ctx) {
   g.allow_only({"type", "file", "node_step", "smoothing"});
+  warn_track_gauge_unused(g, ctx, "table");
   GeometryTableOptions o;
   if (g.has("node_step")) o.node_step = g.in_range("node_step", 1e-6, 2e-3);
   if (g.has("smoothing")) o.smoothing = g.in_range("smoothing", 0.0, 2e-3);
@@ -78,6 +92,15 @@ std::shared_ptr<const ContactGeometry> read_profiles(const InputNode& g, const G
     spdlog::warn("{}", ctx.warnings->back());
   }
   p.setup = read_track_setup(g, "r0");
+  // The gauge of the track the wheels run on: the track file's, unless the
+  // geometry states its own, which must then be the same.
+  if (ctx.track_gauge > 0.0) {
+    if (!g.has("gauge")) p.setup.gauge = ctx.track_gauge;
+    else if (std::abs(p.setup.gauge - ctx.track_gauge) > 5e-4)
+      g.at("gauge").fail("contact.geometry.gauge " + config::format_number(p.setup.gauge) +
+                         " m differs from the track file's gauge " + config::format_number(ctx.track_gauge) +
+                         " m: give one of them (the geometry then uses the track's)");
+  }
   const double s_max = g.has("max_shift") ? g.in_range("max_shift", 0.002, 0.02) : 0.015;
   p.grid.y_min = -s_max;
   p.grid.y_max = s_max;
@@ -89,7 +112,13 @@ std::shared_ptr<const ContactGeometry> read_profiles(const InputNode& g, const G
     const std::string d = g.string("cache_dir");
     p.cache_dir = fs::path(d).is_absolute() ? d : (fs::path(ctx.base_dir) / d).lexically_normal().string();
   }
-  return std::make_shared<ProfileGeometry>(p, ctx.material);
+  try {
+    return std::make_shared<ProfileGeometry>(p, ctx.material);
+  } catch (const InputError& e) {
+    if (!(ctx.track_gauge > 0.0) || g.has("gauge")) throw;
+    g.fail(std::string(e.what()) + " (with the track file's gauge " + config::format_number(ctx.track_gauge) +
+           " m, which the profiles geometry takes: a vehicle for another gauge? give flange_back for it)");
+  }
 }
 
 }  // namespace

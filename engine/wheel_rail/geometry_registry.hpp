@@ -27,6 +27,7 @@ struct GeometryReadContext {
   std::string base_dir;                             // folder of the scenario (relative file names)
   contact::Material material;                       // the scenario's contact material
   std::vector<std::string>* warnings = nullptr;     // physics-sanity warnings of the scenario
+  double track_gauge = 0.0;                         // the track file's gauge [m]; 0: not stated (1.435 m)
 };
 
 using GeometryReader = std::shared_ptr<const ContactGeometry> (*)(const config::InputNode& node,

@@ -267,6 +267,13 @@ TEST_CASE("railsim on bad options: exit 2 naming the option and the range", "[cl
        {"table_narrow.dat: the table covers shifts up to +-0.5 mm: no amplitude of 1..6 mm fits"}},
       {"compare-yq into a compared run's folder", "compare-yq " + sc + " '" + dir + "/run_a' --out '" + dir + "/run_a/'",
        {"--out " + dir + "/run_a/: is the run folder " + dir + "/run_a being compared"}},
+      // compare-yq labels: one per folder, none empty, none twice (the rows could not be told apart).
+      {"--labels a,a", "compare-yq " + sc + " '" + dir + "/x' '" + dir + "/y' --labels a,a --out '" + dir + "/yq_labels'",
+       {"--labels: 'a' is given twice (labels 1 and 2)"}},
+      {"--labels ,b", "compare-yq " + sc + " '" + dir + "/x' '" + dir + "/y' --labels ,b --out '" + dir + "/yq_labels'",
+       {"--labels: label 1 is empty"}},
+      {"--labels a,", "compare-yq " + sc + " '" + dir + "/x' '" + dir + "/y' --labels a, --out '" + dir + "/yq_labels'",
+       {"--labels: label 2 is empty"}},
       {"--gauge with --table", "conicity --table " + bad("table_narrow.dat") + " --gauge 99",
        {"--gauge: does not apply with --table"}},
       {"--y-step 0.012 on conicity", "conicity --y-step 0.012 --no-cache",

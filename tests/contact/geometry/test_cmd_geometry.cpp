@@ -17,7 +17,14 @@ TEST_CASE("railsim geometry writes the contact table", "[geometry][cli]") {
   for (const char* c : {"y", "roll", "left_n", "left_y_rail", "left_radius", "left_angle", "left_A", "left_B", "right_n",
                         "right_y_rail", "right_radius", "right_angle", "right_A", "right_B", "left2_radius", "right2_angle"})
     CHECK_NOTHROW(t.column(c));
-  CHECK_THAT(r.output, Catch::Contains("flange contact"));
+  CHECK_THAT(r.output, Catch::Contains("flange contact (angle > 30 deg): left wheel from y = +"));
+  // A flange-back spacing that keeps the flanges off the rails within the table: said so (it printed "+nan mm").
+  const auto wide = test::run_railsim("geometry --flange-back 1.33 --y-min -0.008 --y-max 0.008 --y-step 0.0005 "
+                                      "--cache-dir " + dir + " --out " + dir + "/w.csv");
+  INFO(wide.output);
+  REQUIRE(wide.exit_code == 0);
+  CHECK_THAT(wide.output, Catch::Contains("left wheel none up to y = +8.0 mm, right wheel none up to y = -8.0 mm"));
+  CHECK_THAT(wide.output, !Catch::Contains("nan"));
 }
 
 TEST_CASE("railsim conicity prints 1..6 mm", "[geometry][cli]") {

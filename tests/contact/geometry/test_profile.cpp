@@ -2,6 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <fstream>
 
 #include "contact/geometry/profile.hpp"
 #include "core/errors.hpp"
@@ -111,4 +112,35 @@ TEST_CASE("profile widths outside the usual range give a warning naming the widt
   const std::string narrow = test::data_path("bad_input/profile_wheel_narrow.csv");
   CHECK_THAT(profile_width_warning(read_profile(narrow, ProfileKind::wheel)),
              Catch::Contains(narrow + ": wheel profile 60.0 mm wide"));
+}
+
+// SIMPACK processing keys railsim does not apply (shift.y, shift.z, rotate)
+// were ignored silently when non-zero: refused naming the file, line and key;
+// a mirror mode other than 0 or 1 likewise. The shipped files (all zero) load.
+TEST_CASE("prw/prr: shift and rotation keys are refused unless zero", "[geometry][profile][errors]") {
+  const std::string src = test::read_text(test::source_path("profiles/MBench_S1002_v3.prw"));
+  const std::string dir = test::temp_dir("prw_keys");
+  auto with = [&](const std::string& key, const std::string& value) {
+    std::string text = src;
+    const auto at = text.find("    " + key + " ");
+    REQUIRE(at != std::string::npos);
+    const auto eq = text.find('=', at), bang = text.find('!', eq);
+    text.replace(eq + 1, bang - eq - 1, " " + value + "   ");
+    const std::string path = dir + "/" + key + ".prw";
+    std::ofstream(path) << text;
+    try {
+      read_profile(path, ProfileKind::wheel);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  CHECK_THAT(with("rotate", "+3.0e-01"), Catch::Contains("rotate.prw:27") && Catch::Contains("key 'rotate'") &&
+                                             Catch::Contains("does not apply SIMPACK's shift and rotation"));
+  CHECK_THAT(with("shift.y", "+5.0e+00"), Catch::Contains("shift.y.prw:25") && Catch::Contains("key 'shift.y'"));
+  CHECK_THAT(with("shift.z", "-1"), Catch::Contains("shift.z.prw:26") && Catch::Contains("key 'shift.z'"));
+  CHECK_THAT(with("mirror.y", "2"), Catch::Contains("mirror.y.prw:32") && Catch::Contains("expected 0") &&
+                                        Catch::Contains("or 1 (got '2')"));
+  CHECK(with("rotate", "+0.000e+00") == "no error");
+  CHECK_NOTHROW(read_profile(test::source_path("profiles/MBench_UIC60_v3.prr"), ProfileKind::rail));
 }

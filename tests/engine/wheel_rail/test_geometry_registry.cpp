@@ -67,3 +67,42 @@ TEST_CASE("geometry registry: an unknown kind names file, line, key and the kind
   }
   CHECK(msg == "g.yaml:2: key 'geometry.type': expected one of 'conical', 'table', 'profiles' (got 'conic')");
 }
+
+// The track file's gauge reaches the geometry the wheels run on: the
+// profiles geometry takes it (a gauge the vehicle cannot sit in is refused
+// naming it), a different gauge stated in the geometry is refused naming
+// both, and the kinds that carry their own gauge (table, cones) say in the
+// warnings that they do not use it. (The track file's gauge was ignored.)
+TEST_CASE("geometry registry: the track file's gauge", "[engine][geometry][track]") {
+  auto read_on = [](const std::string& yaml, double track_gauge, std::vector<std::string>* warnings) {
+    const auto doc = InputNode::load_string(yaml, "g.yaml");
+    return engine::read_geometry(doc.at("geometry"),
+                                 {test::source_path("scenarios"), contact::Material{}, warnings, track_gauge});
+  };
+  auto error_of = [&](const std::string& yaml, double track_gauge) {
+    try {
+      read_on(yaml, track_gauge, nullptr);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  const std::string profiles = "geometry: {type: profiles, wheel: S1002, rail: UIC60, inclination: 1/40, r0: 0.46";
+  const std::string stated = error_of(profiles + ", gauge: 1.435}\n", 1.445);
+  INFO(stated);
+  CHECK(stated.find("g.yaml:1: key 'geometry.gauge'") != std::string::npos);
+  CHECK(stated.find("contact.geometry.gauge 1.435 m differs from the track file's gauge 1.445 m") !=
+        std::string::npos);
+  const std::string metre = error_of(profiles + "}\n", 1.0);
+  INFO(metre);
+  CHECK(metre.find("'flange_back' must be smaller than 'gauge'") != std::string::npos);
+  CHECK(metre.find("with the track file's gauge 1 m") != std::string::npos);
+  // The same gauge stated twice, or none from the track: accepted (no table is built here for them).
+  CHECK(error_of(profiles + ", gauge: 1.4352, flange_back: 1.5}\n", 1.435).find("differs") == std::string::npos);
+  std::vector<std::string> warnings;
+  read_on("geometry: {type: table, file: ../vehicles/contact_tables/RSGEO_S1002_UIC60_1in40.dat}\n", 1.0, &warnings);
+  read_on("geometry: {type: conical, r0: 0.46, conicity: 0.2, l0: 0.75}\n", 1.435, &warnings);
+  REQUIRE(warnings.size() == 1);
+  CHECK(warnings[0].find("the track file's gauge 1 m is not used by the 'table' contact geometry") !=
+        std::string::npos);
+}
