@@ -14,6 +14,42 @@
 
 namespace railsim {
 
+namespace {
+
+// A folder without the record (written before it existed, or by hand): the
+// analysis whose own file is there ("?" for a summary.json of none of them),
+// "" for a folder without results. `evidence` names the file.
+std::string analysis_of_files(const std::string& dir, std::string& evidence) {
+  static const std::pair<const char*, const char*> kOwnFiles[] = {
+      {"run", "channels.csv"},
+      {"critical-speed", "bifurcation.csv.settings"},
+      {"critical-speed", "bifurcation.csv"},
+      {"critical-speed", "ramping.csv"},
+      {"critical-speed", "reductions.csv"},
+      {"critical-speed", "compare_models.csv"},
+      {"modes", "modes.csv"},
+      {"compare-contact", "comparison.csv"},
+      {"compare-yq", "yq_comparison.csv"},
+  };
+  // Regular files only: a link or a device in their place is the user's.
+  const auto is_file = [](const std::string& p) {
+    std::error_code ec;
+    return std::filesystem::is_regular_file(std::filesystem::symlink_status(p, ec));
+  };
+  for (const auto& [name, file] : kOwnFiles)
+    if (is_file(dir + "/" + file)) {
+      evidence = dir + "/" + file;
+      return name;
+    }
+  if (is_file(dir + "/summary.json")) {
+    evidence = dir + "/summary.json";
+    return "?";
+  }
+  return "";
+}
+
+}  // namespace
+
 OutputLock::OutputLock(const std::string& dir, const std::string& analysis) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
@@ -40,15 +76,19 @@ OutputLock::OutputLock(const std::string& dir, const std::string& analysis) {
   if (analysis.empty()) return;
   // Whose results the folder holds (written by the holder of the lock only).
   const std::string marker = dir + "/.railsim.analysis";
-  std::string before;
+  std::string before, evidence = marker;
   if (std::ifstream in(marker); in) std::getline(in, before);
+  const bool recorded = !before.empty();
+  if (!recorded) before = analysis_of_files(dir, evidence);
   if (!before.empty() && before != analysis) {
     ::close(fd_);
     fd_ = -1;
-    throw InputError(dir + ": holds the results of `railsim " + before + "` (" + marker + "); `railsim " + analysis +
+    const std::string holds = before == "?" ? "holds a summary.json that no railsim analysis wrote ("
+                                            : "holds the results of `railsim " + before + "` (";
+    throw InputError(dir + ": " + holds + evidence + "); `railsim " + analysis +
                      "` would replace its summary.json: give another output folder, or remove this one first");
   }
-  if (before.empty()) {
+  if (!recorded) {
     std::ofstream out(marker, std::ios::trunc);
     out << analysis << "\n";
     if (!out.flush()) {

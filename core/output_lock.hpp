@@ -8,7 +8,11 @@
 // Given the analysis that writes the folder ("run", "critical-speed", ...),
 // the lock also records it in DIR/.railsim.analysis and refuses a folder that
 // holds another analysis's results (its summary.json, its verdict, would be
-// replaced by a different kind of document).
+// replaced by a different kind of document). A folder without the record
+// (from before it, or written by hand) is judged by the analyses' own files
+// (channels.csv: run; bifurcation.csv, ramping.csv, reductions.csv:
+// critical-speed; modes.csv; comparison.csv; yq_comparison.csv), and a
+// summary.json of none of them is refused too.
 #pragma once
 
 #include <string>

@@ -4,7 +4,11 @@
 
 #include <unistd.h>
 
+#include <filesystem>
+#include <fstream>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "core/errors.hpp"
 #include "core/output_lock.hpp"
@@ -52,4 +56,39 @@ TEST_CASE("an output folder holds the results of one analysis", "[core][lock]") 
   CHECK_NOTHROW(OutputLock(plain));
   CHECK_NOTHROW(OutputLock(plain, "modes"));
   CHECK_THROWS_AS(OutputLock(plain, "run"), InputError);
+}
+
+// Folders without the record (written before it existed, or by hand): the
+// analyses' own files say whose results they are; a summary.json of none of
+// them is not replaced either.
+TEST_CASE("an output folder without the record is judged by its files", "[core][lock]") {
+  const std::string base = test::temp_dir("output_lock_files");
+  auto folder_with = [&](const std::string& name, const std::vector<std::string>& files) {
+    const std::string dir = base + "/" + name;
+    std::filesystem::create_directories(dir);
+    for (const auto& f : files) std::ofstream(dir + "/" + f) << "x\n";
+    return dir;
+  };
+  auto error_of = [](const std::string& dir, const std::string& analysis) {
+    try {
+      OutputLock l(dir, analysis);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  const std::string cs = folder_with("cs", {"bifurcation.csv", "summary.json"});
+  CHECK(error_of(cs, "run") == cs + ": holds the results of `railsim critical-speed` (" + cs +
+                                   "/bifurcation.csv); `railsim run` would replace its summary.json: give another "
+                                   "output folder, or remove this one first");
+  CHECK(error_of(cs, "critical-speed").empty());  // the same analysis resumes, and records it
+  CHECK(test::read_text(cs + "/.railsim.analysis") == "critical-speed\n");
+  const std::string run = folder_with("run", {"channels.csv", "summary.json"});
+  CHECK(error_of(run, "modes").find("holds the results of `railsim run` (" + run + "/channels.csv)") !=
+        std::string::npos);
+  const std::string foreign = folder_with("foreign", {"summary.json"});
+  CHECK(error_of(foreign, "run").find("holds a summary.json that no railsim analysis wrote (" + foreign +
+                                      "/summary.json)") != std::string::npos);
+  const std::string other = folder_with("other", {"notes.txt"});
+  CHECK(error_of(other, "run").empty());
 }
