@@ -92,6 +92,9 @@ SegmentSpec parse_segment(const InputNode& n, const std::string& label) {
   return s;
 }
 
+// Steepest cant ramp accepted along a clothoid [m/m].
+constexpr double kMaxCantGradient = 0.02;
+
 std::vector<std::unique_ptr<Segment>> build_segments(const InputNode& list, const std::string& file) {
   std::vector<SegmentSpec> specs;
   const auto items = list.elements();
@@ -122,6 +125,19 @@ std::vector<std::unique_ptr<Segment>> build_segments(const InputNode& list, cons
                    "adjacent; put a straight or circular segment between them");
       const double k0 = prev ? prev->kappa : 0.0, E0 = prev ? prev->cant : 0.0;
       const double k1 = next ? next->kappa : 0.0, E1 = next ? next->cant : 0.0;
+      // A transition shorter than a wheelbase, or a cant ramp far steeper
+      // than track standards allow, was a step in disguise (0.5 m from 0 to
+      // 150 mm: the run failed with a wheel load of 1e10 N).
+      if (s.length < 1.0)
+        fail_at(s, "key 'length': a clothoid of " + format_number(s.length) + " m: at least 1 m (transitions are "
+                   "tens of metres long)");
+      const double gradient = std::abs(E1 - E0) / s.length;  // [m/m]
+      if (gradient > kMaxCantGradient)
+        fail_at(s, "key 'length': the cant changes by " + format_number(std::abs(E1 - E0) * 1e3) + " mm over " +
+                       format_number(s.length) + " m (" + format_number(gradient * 1e3) + " mm/m): at most " +
+                       format_number(kMaxCantGradient * 1e3) + " mm/m, about ten times what line standards allow "
+                       "(EN 13803: 2.25-2.5 mm/m); give a clothoid of at least " +
+                       format_number(std::abs(E1 - E0) / kMaxCantGradient) + " m");
       out.push_back(std::make_unique<Clothoid>(s.length, k0, k1, E0, E1, s.shape));
       continue;
     }

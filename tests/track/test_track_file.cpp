@@ -189,3 +189,19 @@ TEST_CASE("railsim track samples a file and bad files exit with code 2 naming th
                                                "/x.csv' --step 0");
   CHECK(step.exit_code == 2);
 }
+
+// A clothoid shorter than 1 m or with a cant ramp steeper than 20 mm/m was a
+// step in disguise (0.5 m from 0 to 150 mm: runs failed with wheel loads of
+// 1e10 N); refused naming the segment, the ramp and the length it needs.
+TEST_CASE("clothoids: at least 1 m and at most 20 mm/m of cant ramp", "[tracks][track_file]") {
+  const std::string head = "segments:\n  - {type: straight, length: 50}\n";
+  const std::string curve = "  - {type: circular, length: 100, radius: 300, direction: left, cant_mm: 150}\n";
+  CHECK(error_of(head + "  - {type: clothoid, length: 0.5}\n" + curve) ==
+        "t.yaml:3: segments[1] (clothoid): key 'length': a clothoid of 0.5 m: at least 1 m (transitions are tens of "
+        "metres long)");
+  CHECK(error_of(head + "  - {type: clothoid, length: 5}\n" + curve) ==
+        "t.yaml:3: segments[1] (clothoid): key 'length': the cant changes by 150 mm over 5 m (30 mm/m): at most "
+        "20 mm/m, about ten times what line standards allow (EN 13803: 2.25-2.5 mm/m); give a clothoid of at least "
+        "7.5 m");
+  CHECK(error_of(head + "  - {type: clothoid, length: 7.5}\n" + curve) == "no error");  // 20 mm/m: the limit itself
+}
