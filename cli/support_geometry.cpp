@@ -95,9 +95,20 @@ GeometrySetup make_geometry(const GeometryOptions& o) {
 contact::ContactTable make_table(const GeometryOptions& o, const GeometrySetup& g) {
   const auto t0 = std::chrono::steady_clock::now();
   bool from_cache = false;
-  contact::ContactTable t = o.no_cache ? contact::ContactTable::build(*g.geometry, g.grid)
-                                       : contact::ContactTable::cached(*g.geometry, *g.wheel, *g.rail, g.grid,
-                                                                       o.cache_dir, &from_cache);
+  contact::ContactTable t;
+  try {
+    t = o.no_cache ? contact::ContactTable::build(*g.geometry, g.grid)
+                   : contact::ContactTable::cached(*g.geometry, *g.wheel, *g.rail, g.grid, o.cache_dir, &from_cache);
+  } catch (const InputError& e) {
+    // A pose the profiles cannot take within the y range: the set-up that made it.
+    const std::string msg = e.what();
+    if (msg.find("puts both wheels on their rails") != std::string::npos ||
+        msg.find("within 1 mm of the end of its profile") != std::string::npos)
+      throw InputError("--wheel " + o.wheel + " / --rail " + o.rail + " with --gauge, --flange-back, --back-face, "
+                       "--inclination as given: " + msg + " (a rail profile given as the wheel, or a gauge and "
+                       "flange-back spacing the wheelset cannot sit in?)");
+    throw;
+  }
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   spdlog::info("contact table: {} rows, {} in {:.1f} ms", t.rows(), from_cache ? "read from cache" : "computed", ms);
   return t;

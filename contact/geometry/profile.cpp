@@ -324,6 +324,11 @@ Profile read_profile(const std::string& path_or_name, ProfileKind kind, const Pr
     fail(path, std::string("cannot open ") + kind_name(kind) + " profile (give a file or one of the names: " +
                    shipped_profile_names() + ")");
   const std::string ext = lower(path.size() >= 4 ? path.substr(path.size() - 4) : path);
+  // SIMPACK's extensions say the kind: a rail (.prr) read as the wheel gave a
+  // wheel without a flange and a message about flange climbing.
+  if ((ext == ".prr" && kind == ProfileKind::wheel) || (ext == ".prw" && kind == ProfileKind::rail))
+    fail(path, std::string("a SIMPACK ") + (ext == ".prr" ? "rail" : "wheel") + " profile (" + ext +
+                   ") given as the " + kind_name(kind) + " profile");
   RawProfile raw = (ext == ".prw" || ext == ".prr") ? read_simpack(path, in) : read_columns(path, in);
   if (options.unit > 0.0) {
     raw.unit = options.unit;

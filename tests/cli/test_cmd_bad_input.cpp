@@ -255,6 +255,8 @@ TEST_CASE("railsim on bad options: exit 2 naming the option and the range", "[cl
       // The geometry commands name the option of a refused track set-up or grid.
       {"--gauge -1", "geometry --gauge -1 --no-cache --out '" + dir + "/g.csv'", {"--gauge: ", "[0.5, 2.5] m (got -1)"}},
       {"--radius 0", "conicity --radius 0 --no-cache", {"--radius: ", "[0.1, 1.5] m (got 0)"}},
+      {"--flange-back 1.2", "geometry --flange-back 1.2 --no-cache --out '" + dir + "/g.csv'",
+       {"--wheel S1002 / --rail UIC60 with --gauge, --flange-back", "puts both wheels on their rails"}},
       {"--flange-back 1.5", "conicity --flange-back 1.5 --no-cache", {"--flange-back/--gauge: ", "smaller than"}},
       {"--y-step 1e-12", "geometry --y-step 1e-12 --no-cache --out '" + dir + "/g.csv'",
        {"--y-step: ", "y step 1e-12 m: expected a value in [1e-6, y_max - y_min] m"}},

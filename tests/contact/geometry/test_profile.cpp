@@ -144,3 +144,15 @@ TEST_CASE("prw/prr: shift and rotation keys are refused unless zero", "[geometry
   CHECK(with("rotate", "+0.000e+00") == "no error");
   CHECK_NOTHROW(read_profile(test::source_path("profiles/MBench_UIC60_v3.prr"), ProfileKind::rail));
 }
+
+// SIMPACK's extension says the kind: a .prr given as the wheel (or a .prw as
+// the rail) is refused naming the file (it gave a flangeless "wheel").
+TEST_CASE("prw/prr: the extension's kind must match the use", "[geometry][profile][errors]") {
+  const std::string prr = test::source_path("profiles/MBench_UIC60_v3.prr");
+  const std::string prw = test::source_path("profiles/MBench_S1002_v3.prw");
+  CHECK_THROWS_WITH(read_profile(prr, ProfileKind::wheel),
+                    Catch::Contains("MBench_UIC60_v3.prr") && Catch::Contains("a SIMPACK rail profile (.prr) given as "
+                                                                              "the wheel profile"));
+  CHECK_THROWS_WITH(read_profile(prw, ProfileKind::rail), Catch::Contains("a SIMPACK wheel profile (.prw)"));
+  CHECK_NOTHROW(read_profile(prw, ProfileKind::wheel));
+}
