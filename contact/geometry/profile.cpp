@@ -359,6 +359,20 @@ Profile read_profile(const std::string& path_or_name, ProfileKind kind, const Pr
                      ": are the numbers in another unit?");
     }
   }
+  // z points down (toward the rail): a wheel's flange tip is its largest z,
+  // inside the profile. A file with z up shows the flange as an interior
+  // minimum 10 mm or more above both ends while the largest z is an end:
+  // refused (it was read as a wheel without a flange, conicity 0.018).
+  if (kind == ProfileKind::wheel) {
+    const auto [zmin, zmax] = std::minmax_element(raw.z.begin(), raw.z.end());
+    const double z0 = raw.z.front(), z1 = raw.z.back();
+    const bool max_at_end = zmax == raw.z.begin() || zmax == raw.z.end() - 1;
+    if (max_at_end && *zmin < std::min(z0, z1) - 0.010)
+      fail(path, "the wheel profile's flange points up: z has an interior minimum " +
+                     std::to_string(static_cast<int>(std::lround((std::min(z0, z1) - *zmin) * 1e3))) +
+                     " mm beyond both ends and its largest value at an end; railsim's z points down, toward the "
+                     "rail (negate z in the file, or read it with z up)");
+  }
   // A wheel's flange (largest z) must lie at negative y (field side positive).
   if (kind == ProfileKind::wheel) {
     const auto imax = static_cast<std::size_t>(std::max_element(raw.z.begin(), raw.z.end()) - raw.z.begin());
