@@ -16,6 +16,7 @@ namespace railsim::track {
 namespace {
 
 constexpr double kMaxIrregularity = 0.2;  // [m], the range of a cosine defect's amplitude (defects.cpp)
+constexpr double kMinRowSpacing = 1e-3;   // [m] between consecutive rows
 
 std::string trim(const std::string& t) {
   const auto b = t.find_first_not_of(" \t\r");
@@ -97,6 +98,12 @@ MeasuredTable read_measured_irregularity(const std::string& path, double unit) {
         if (!t.s.empty() && !(v > t.s.back()))
           fail(lineno, "distance s = " + config::format_number(v) + " m is not greater than the previous row's (" +
                            config::format_number(t.s.back()) + " m): rows must be sorted by increasing distance");
+        // A spike over a picometre was lost without a word (the track is
+        // sampled in millimetres at the finest): rows at least 1 mm apart.
+        if (!t.s.empty() && v - t.s.back() < kMinRowSpacing)
+          fail(lineno, "distance s = " + config::format_number(v) + " m is only " +
+                           config::format_number(v - t.s.back()) + " m after the previous row's: rows must be at "
+                           "least 1 mm apart (records are sampled every 0.1-1 m)");
         t.s.push_back(v);
       } else {
         // As a cosine defect's amplitude: a track irregularity within +-200 mm.

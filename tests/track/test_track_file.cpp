@@ -149,6 +149,10 @@ TEST_CASE("malformed track files name the segment and the key", "[tracks][track_
              Catch::Contains("key 'offset'"));
   CHECK_THAT(error_of(std::string(kCurve) + "irregularities:\n  - {type: measured, file: measured_large.csv, scale: 2}\n"),
              Catch::Contains("key 'scale': scale 2 makes the record's largest value 300 mm"));
+  // Rows closer than 1 mm (a 10 mm spike over 1e-12 m was lost without a word).
+  CHECK_THAT(error_of(std::string(kCurve) + "irregularities:\n  - {type: measured, file: measured_spike.csv}\n"),
+             Catch::Contains("measured_spike.csv:5: distance s = 50.000000000001 m is only") &&
+                 Catch::Contains("rows must be at least 1 mm apart"));
 }
 
 TEST_CASE("a measured irregularity and a twist load from YAML", "[tracks][track_file]") {
