@@ -48,6 +48,27 @@ std::string analysis_of_files(const std::string& dir, std::string& evidence) {
   return "";
 }
 
+// The folder's record of whose results it holds (DIR/.railsim.analysis, or
+// the analyses' own files when unrecorded): InputError when they are another
+// analysis's; records `analysis` when there is no record yet.
+void claim_for_analysis(const std::string& dir, const std::string& analysis) {
+  const std::string marker = dir + "/.railsim.analysis";
+  std::string before, evidence = marker;
+  if (std::ifstream in(marker); in) std::getline(in, before);
+  const bool recorded = !before.empty();
+  if (!recorded) before = analysis_of_files(dir, evidence);
+  if (!before.empty() && before != analysis) {
+    const std::string holds = before == "?" ? "holds a summary.json that no railsim analysis wrote ("
+                                            : "holds the results of `railsim " + before + "` (";
+    throw InputError(dir + ": " + holds + evidence + "); `railsim " + analysis +
+                     "` would replace its summary.json: give another output folder, or remove this one first");
+  }
+  if (recorded) return;
+  std::ofstream out(marker, std::ios::trunc);
+  out << analysis << "\n";
+  if (!out.flush()) throw InputError(marker + ": cannot write (" + std::strerror(errno) + ")");
+}
+
 }  // namespace
 
 OutputLock::OutputLock(const std::string& dir, const std::string& analysis) {
@@ -74,28 +95,12 @@ OutputLock::OutputLock(const std::string& dir, const std::string& analysis) {
     // The pid is for messages only.
   }
   if (analysis.empty()) return;
-  // Whose results the folder holds (written by the holder of the lock only).
-  const std::string marker = dir + "/.railsim.analysis";
-  std::string before, evidence = marker;
-  if (std::ifstream in(marker); in) std::getline(in, before);
-  const bool recorded = !before.empty();
-  if (!recorded) before = analysis_of_files(dir, evidence);
-  if (!before.empty() && before != analysis) {
-    ::close(fd_);
+  try {
+    claim_for_analysis(dir, analysis);
+  } catch (...) {
+    ::close(fd_);  // refused: the folder is not left locked
     fd_ = -1;
-    const std::string holds = before == "?" ? "holds a summary.json that no railsim analysis wrote ("
-                                            : "holds the results of `railsim " + before + "` (";
-    throw InputError(dir + ": " + holds + evidence + "); `railsim " + analysis +
-                     "` would replace its summary.json: give another output folder, or remove this one first");
-  }
-  if (!recorded) {
-    std::ofstream out(marker, std::ios::trunc);
-    out << analysis << "\n";
-    if (!out.flush()) {
-      ::close(fd_);
-      fd_ = -1;
-      throw InputError(marker + ": cannot write (" + std::strerror(errno) + ")");
-    }
+    throw;
   }
 }
 

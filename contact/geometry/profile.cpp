@@ -368,9 +368,8 @@ Profile read_profile(const std::string& path_or_name, ProfileKind kind, const Pr
     const double z0 = raw.z.front(), z1 = raw.z.back();
     const bool max_at_end = zmax == raw.z.begin() || zmax == raw.z.end() - 1;
     if (max_at_end && *zmin < std::min(z0, z1) - 0.010)
-      fail(path, "the wheel profile's flange points up: z has an interior minimum " +
-                     std::to_string(static_cast<int>(std::lround((std::min(z0, z1) - *zmin) * 1e3))) +
-                     " mm beyond both ends and its largest value at an end; railsim's z points down, toward the "
+      fail(path, "the wheel profile's flange points up: z has an interior minimum " + fmt_mm(std::min(z0, z1) - *zmin) +
+                     " beyond both ends and its largest value at an end; railsim's z points down, toward the "
                      "rail (negate z in the file, or read it with z up)");
   }
   // A wheel's flange (largest z) must lie at negative y (field side positive).

@@ -20,22 +20,43 @@
 
 using namespace railsim;
 
+namespace {
+
+// `railsim <args>` in the background, sent SIGTERM once `started` has content;
+// its exit status and output, and whether `finished` (written at its end)
+// already existed then (the stop came too late to test anything).
+struct Stopped {
+  int code = -1;
+  std::string output;
+  bool finished_before = false;
+};
+Stopped sigterm_once(const std::string& args, const std::string& tag, const std::string& started,
+                     const std::string& finished) {
+  Stopped s;
+  const auto job = test::start_railsim(args, tag);
+  REQUIRE(job.pid > 0);
+  REQUIRE(test::wait_until([&] { return !test::read_text(started).empty(); }, 120.0));
+  s.finished_before = !test::read_text(finished).empty();
+  ::kill(job.pid, SIGTERM);
+  s.code = job.wait(60.0);
+  s.output = job.output();
+  return s;
+}
+
+}  // namespace
+
 TEST_CASE("railsim run stopped by SIGTERM keeps its rows and says so in summary.json", "[cli][run][interrupt]") {
   const std::string dir = test::temp_dir("cli_run_sigterm");
   const std::string scenario = test::source_path("scenarios/manchester_coach_curve_R300.yaml");
   const std::string out = dir + "/run";
   // 240 s simulated (the scenario's 24.5 s take about a second): the stop comes from the signal.
-  const auto job = test::start_railsim("run '" + scenario + "' --set duration=240 --out '" + out + "'", dir + "/job");
-  REQUIRE(job.pid > 0);
-  REQUIRE(test::wait_until([&] { return !test::read_text(out + "/channels.csv").empty(); }, 120.0));
-  const bool finished_before = !test::read_text(out + "/summary.json").empty();
-  ::kill(job.pid, SIGTERM);
-  const int code = job.wait(60.0);
-  INFO(job.output());
-  REQUIRE_FALSE(finished_before);
-  CHECK(code == 128 + SIGTERM);
-  CHECK(job.output().find("interrupted at t = ") != std::string::npos);
-  CHECK(job.output().find("stopped by a signal") != std::string::npos);
+  const Stopped job = sigterm_once("run '" + scenario + "' --set duration=240 --out '" + out + "'", dir + "/job",
+                                   out + "/channels.csv", out + "/summary.json");
+  INFO(job.output);
+  REQUIRE_FALSE(job.finished_before);
+  CHECK(job.code == 128 + SIGTERM);
+  CHECK(job.output.find("interrupted at t = ") != std::string::npos);
+  CHECK(job.output.find("stopped by a signal") != std::string::npos);
   const auto js = test::read_json(out + "/summary.json");
   CHECK(js["status"] == "interrupted");
   CHECK(js["running_safety"].is_string());
@@ -64,17 +85,13 @@ TEST_CASE("railsim critical-speed stopped by SIGTERM keeps its points and resume
   INFO(clean.output);
   REQUIRE(clean.exit_code == 0);
   const std::string out = dir + "/stopped";
-  const auto job = test::start_railsim(cmd + out + "'", dir + "/job");
-  REQUIRE(job.pid > 0);
-  REQUIRE(test::wait_until([&] { return !test::read_text(out + "/bifurcation.csv.part0").empty(); }, 120.0));
-  const bool finished_before = !test::read_text(out + "/bifurcation.csv").empty();
-  ::kill(job.pid, SIGTERM);
-  const int code = job.wait(60.0);
-  INFO(job.output());
-  REQUIRE_FALSE(finished_before);
-  CHECK(code == 128 + SIGTERM);
-  CHECK(job.output().find("points of this run are kept in") != std::string::npos);
-  CHECK(job.output().find("the same command in the same folder resumes") != std::string::npos);
+  const Stopped job =
+      sigterm_once(cmd + out + "'", dir + "/job", out + "/bifurcation.csv.part0", out + "/bifurcation.csv");
+  INFO(job.output);
+  REQUIRE_FALSE(job.finished_before);
+  CHECK(job.code == 128 + SIGTERM);
+  CHECK(job.output.find("points of this run are kept in") != std::string::npos);
+  CHECK(job.output.find("the same command in the same folder resumes") != std::string::npos);
   const auto again = test::run_railsim(cmd + out + "'");
   INFO(again.output);
   REQUIRE(again.exit_code == 0);
