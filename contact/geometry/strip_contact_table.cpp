@@ -273,7 +273,7 @@ StripContactTable StripContactTable::build(const WheelRailGeometry& g, const Str
 void StripContactTable::unpack(const std::vector<Entry>& entries) {
   static_assert(sizeof(Entry) == kColumns * sizeof(double), "Entry is kColumns doubles");
   entries_ = entries.size();
-  cols_.resize(entries_ * kColumns);
+  cols_.assign(entries_ * kColumns + kLanes, 0.0);  // + kLanes: strips() reads whole lane groups
   for (std::size_t n = 0; n < entries_; ++n) {
     const double* e = &entries[n].gap;
     for (int c = 0; c < kColumns; ++c) cols_[std::size_t(c) * entries_ + n] = e[c];
@@ -399,85 +399,91 @@ void StripContactTable::strips(double y, double psi, double cutoff, StripSet& ou
     j0 = std::max(j0, n0 - 1);
     j1 = std::min(j1, n1 + 1);
   }
-  // Lead: odd in psi, interpolated as psi * (lead/psi) linear in psi^2 (node 0
-  // takes node 1's lead/psi).
-  const double p0 = k * grid_.yaw_step, p1 = (k + 1) * grid_.yaw_step;
-  const double sign = psi < 0 ? -1.0 : 1.0;
   out.n = 0;
   out.width = grid_.strip;
-  // Entries of strip j0 + q in the (up to) four rows: a (row i), b (row i+1)
-  // at yaw node k (0) and k+1 (1).
   const int m = std::min(j1 - j0 + 1, StripSet::kMax);
   if (m <= 0) return;
   auto at = [&](int kk, int ii) { return row(kk, ii).offset + std::size_t(j0 - row(kk, ii).j0); };
   const std::size_t ia0 = at(k, i), ib0 = at(k, i + 1);
   const std::size_t ia1 = two ? at(k + 1, i) : ia0, ib1 = two ? at(k + 1, i + 1) : ib0;
-  // Pass 1: gaps; pass 2 interpolates the other quantities over the run
-  // [qa, qb] from the first to the last strip near a loaded one, one
-  // quantity at a time (columns: vectorised over the strips), and fills the
-  // near strips. Each value is the same expression as a scalar evaluation:
-  // Hermite in y at yaw nodes k and k + 1, then linear between them.
-  double vgap[StripSet::kMax];
-  auto hermite = [&](int q, std::size_t oa, std::size_t ob, int n0, int n1, double* dst) {
-    const double *av = column(2 * q) + oa, *ad = column(2 * q + 1) + oa;
-    const double *bv = column(2 * q) + ob, *bd = column(2 * q + 1) + ob;
-    for (int n = n0; n <= n1; ++n) dst[n] = h00 * av[n] + h10 * ad[n] + h01 * bv[n] + h11 * bd[n];
-  };
-  {
-    double v1[StripSet::kMax];
-    hermite(kGap, ia0, ib0, 0, m - 1, vgap);
-    if (two) {
-      hermite(kGap, ia1, ib1, 0, m - 1, v1);
-      for (int q = 0; q < m; ++q) vgap[q] += w * (v1[q] - vgap[q]);
-    }
-    for (int q = 0; q < m; ++q) vgap[q] = std::max(0.0, vgap[q]);
-  }
-  int qa = m, qb = -1;
-  for (int q = 0; q < m; ++q)
-    if (vgap[q] <= cutoff) {
-      qa = std::min(qa, std::max(0, q - 1));
-      qb = std::min(m - 1, q + 1);
-    }
-  if (qb < qa) return;
-  // lead / psi at the nodes (node 0 takes node 1's); at psi = 0 the lead is 0.
-  const double inv_p0 = k > 0 ? 1.0 / p0 : 0.0, inv_p1 = nk_ > 1 ? 1.0 / p1 : 0.0;
-  constexpr int kQuantities = 6;  // angle, lateral, lead, height, A, f: val[quantity - kAngle]
-  double val[kQuantities][StripSet::kMax], v1[StripSet::kMax];
-  for (int l = 0; l < kQuantities; ++l) {
-    double* v0 = val[l];
-    const int quantity = kAngle + l;
-    hermite(quantity, ia0, ib0, qa, qb, v0);
+  // Every quantity is a weighted sum of eight entries of strip j0 + q: value
+  // and y-slope at rows i and i + 1 (Hermite in y), at yaw nodes k and k + 1
+  // (linear in psi^2 between them): weights c[0..3] at node k, c[4..7] at
+  // node k + 1. interpolate() sums them over strips [q0, q0 + cnt) into
+  // dst[0, cnt), one quantity at a time (columns: vectorised over the strips).
+  auto interpolate = [&](int quantity, const double* c, int q0, int cnt, double* __restrict dst) {
+    const double* __restrict v = column(2 * quantity) + q0;
+    const double* __restrict d = column(2 * quantity + 1) + q0;
+    const double c0 = c[0], c1 = c[1], c2 = c[2], c3 = c[3];
     if (!two) {
-      if (quantity == kLead)
-        for (int q = qa; q <= qb; ++q) v0[q] = sign * apsi * v0[q] * inv_p0;  // at a node; 0 at psi = 0 (k = 0)
-      continue;
+      for (int n = 0; n < cnt; ++n) dst[n] = c0 * v[ia0 + n] + c1 * d[ia0 + n] + c2 * v[ib0 + n] + c3 * d[ib0 + n];
+      return;
     }
-    hermite(quantity, ia1, ib1, qa, qb, v1);
-    if (quantity != kLead) {
-      for (int q = qa; q <= qb; ++q) v0[q] += w * (v1[q] - v0[q]);
-    } else {
-      for (int q = qa; q <= qb; ++q) {
-        const double g1 = v1[q] * inv_p1;
-        const double g0 = k > 0 ? v0[q] * inv_p0 : g1;
-        v0[q] = sign * apsi * (g0 + w * (g1 - g0));
-      }
-    }
+    const double c4 = c[4], c5 = c[5], c6 = c[6], c7 = c[7];
+    for (int n = 0; n < cnt; ++n)
+      dst[n] = (c0 * v[ia0 + n] + c1 * d[ia0 + n] + c2 * v[ib0 + n] + c3 * d[ib0 + n]) +
+               (c4 * v[ia1 + n] + c5 * d[ia1 + n] + c6 * v[ib1 + n] + c7 * d[ib1 + n]);
+  };
+  const double u0 = two ? 1.0 - w : 1.0, u1 = two ? w : 0.0;
+  const double even[8] = {u0 * h00, u0 * h10, u0 * h01, u0 * h11, u1 * h00, u1 * h10, u1 * h01, u1 * h11};
+  // Lead: odd in psi, interpolated as psi * (lead/psi) linear in psi^2 (node 0
+  // takes node 1's lead/psi; at psi = 0 the lead is 0).
+  const double p0 = k * grid_.yaw_step, p1 = (k + 1) * grid_.yaw_step;
+  const double inv_p0 = k > 0 ? 1.0 / p0 : 0.0, inv_p1 = nk_ > 1 ? 1.0 / p1 : 0.0;
+  const double odd = (psi < 0 ? -1.0 : 1.0) * apsi;
+  const double l0 = two ? (k > 0 ? odd * (1.0 - w) * inv_p0 : 0.0) : odd * inv_p0;
+  const double l1 = two ? (k > 0 ? odd * w * inv_p1 : odd * inv_p1) : 0.0;
+  const double lead[8] = {l0 * h00, l0 * h10, l0 * h01, l0 * h11, l1 * h00, l1 * h10, l1 * h01, l1 * h11};
+  // Pass 1: gaps of all m strips; pass 2 the other quantities over the run
+  // [qa, qb] from the first to the last strip near a loaded one, written
+  // straight into the output's columns.
+  double vgap[StripSet::kMax];
+  // Loops run over whole groups of kLanes strips (the columns and the output
+  // have room for the overrun; values past the range are never read), so no
+  // loop takes a scalar remainder.
+  auto lanes = [](int c) { return (c + kLanes - 1) / kLanes * kLanes; };
+  interpolate(kGap, even, 0, lanes(m), vgap);
+  for (int q = 0; q < m; ++q) vgap[q] = std::max(0.0, vgap[q]);
+  // The first and last strips within the cutoff; the run [qa, qb] adds one
+  // neighbour on each side. Strips between them that are not within one strip
+  // of a passing one (two separate runs: tread and flange) are dropped below.
+  int first = 0, last = m - 1;
+  while (first < m && !(vgap[first] <= cutoff)) ++first;
+  if (first == m) return;
+  while (!(vgap[last] <= cutoff)) --last;
+  int passing = 0;
+  for (int q = first; q <= last; ++q) passing += vgap[q] <= cutoff ? 1 : 0;
+  bool split = false;
+  if (passing < last - first + 1)
+    for (int q = first + 1; q < last && !split; ++q)
+      split = !(vgap[q - 1] <= cutoff) && !(vgap[q] <= cutoff) && !(vgap[q + 1] <= cutoff);
+  const int qa = std::max(0, first - 1), qb = std::min(m - 1, last + 1);
+  const int cnt = qb - qa + 1, cnt_lanes = lanes(cnt);
+  interpolate(kAngle, even, qa, cnt_lanes, out.angle);
+  interpolate(kLateral, even, qa, cnt_lanes, out.lateral);
+  interpolate(kLead, lead, qa, cnt_lanes, out.lead);
+  interpolate(kHeight, even, qa, cnt_lanes, out.height);
+  interpolate(kA, even, qa, cnt_lanes, out.A);
+  interpolate(kF, even, qa, cnt_lanes, out.f);
+  for (int n = 0; n < cnt; ++n) {
+    out.index[n] = j0 + qa + n;
+    out.gap[n] = vgap[qa + n];
+    out.y_wheel[n] = y_wheel_[std::size_t(j0 + qa + n)];
   }
-  for (int q = qa; q <= qb; ++q) {
-    const bool near = vgap[q] <= cutoff || (q > 0 && vgap[q - 1] <= cutoff) || (q + 1 < m && vgap[q + 1] <= cutoff);
-    if (!near || out.n == StripSet::kMax) continue;
-    const int j = j0 + q;
-    StripPoint& sp = out.s[out.n++];
-    sp.index = j;
-    sp.gap = vgap[q];
-    sp.y_wheel = y_wheel_[std::size_t(j)];
-    sp.angle = val[kAngle - kAngle][q];
-    sp.lateral = val[kLateral - kAngle][q];
-    sp.lead = val[kLead - kAngle][q];
-    sp.height = val[kHeight - kAngle][q];
-    sp.A = val[kA - kAngle][q];
-    sp.f = val[kF - kAngle][q];
+  out.n = cnt;
+  if (!split) return;
+  // Between two separate runs (tread and flange) strips far from both are
+  // dropped: keep those near a strip within the cutoff (in place).
+  auto near = [&](int q) {
+    return vgap[q] <= cutoff || (q > 0 && vgap[q - 1] <= cutoff) || (q + 1 < m && vgap[q + 1] <= cutoff);
+  };
+  int kept = 0;
+  for (int n = 0; n < cnt; ++n) {
+    if (!near(qa + n)) continue;
+    if (kept != n) out.set(kept, out[n]);
+    ++kept;
   }
+  out.n = kept;
 }
 
 StripContactTable StripContactTable::cached(const WheelRailGeometry& geometry, const Profile& wheel, const Profile& rail,

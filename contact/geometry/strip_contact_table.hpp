@@ -60,24 +60,40 @@ struct StripTableGrid {
   void validate() const;                                  // InputError naming the field and its range
 };
 
-// No default member initialisers, so that a StripSet's kMax points are not
-// cleared on construction (25 kB; the engine builds sets per evaluation):
-// add points with StripSet::add(), which value-initialises them.
+// One strip of one wheel (the fields above).
 struct StripPoint {
-  int index;  // strip index along the wheel profile (consecutive = neighbours)
-  double gap, angle, lateral, lead, height, A, f;
-  double y_wheel;  // wheel-profile lateral coordinate [m]
+  int index = 0;  // strip index along the wheel profile (consecutive = neighbours)
+  double gap = 0, angle = 0, lateral = 0, lead = 0, height = 0, A = 0, f = 0;
+  double y_wheel = 0;  // wheel-profile lateral coordinate [m]
 };
 
-// Strips of one wheel, increasing index; no allocation. s[0, n) are valid.
+// Strips of one wheel, increasing index; no allocation. Held as columns
+// (structure of arrays) so that StripContactTable::strips() writes each
+// interpolated quantity as one vectorised loop and the normal-contact solver
+// (engine/wheel_rail/strip_patches.cpp) reads only the columns it needs;
+// entries [0, n) are valid (the arrays are not cleared on construction).
 struct StripSet {
   static constexpr int kMax = 320;
   int n = 0;
   double width = 0.0;  // strip width [m]
-  StripPoint s[kMax];
-  StripPoint& add() {  // caller checks n < kMax
-    s[n] = StripPoint{};
-    return s[n++];
+  int index[kMax];
+  double gap[kMax], angle[kMax], lateral[kMax], lead[kMax], height[kMax], A[kMax], f[kMax], y_wheel[kMax];
+  StripPoint operator[](int j) const {
+    return StripPoint{index[j], gap[j], angle[j], lateral[j], lead[j], height[j], A[j], f[j], y_wheel[j]};
+  }
+  void add(const StripPoint& p) {  // caller checks n < kMax
+    set(n++, p);
+  }
+  void set(int j, const StripPoint& p) {
+    index[j] = p.index;
+    gap[j] = p.gap;
+    angle[j] = p.angle;
+    lateral[j] = p.lateral;
+    lead[j] = p.lead;
+    height[j] = p.height;
+    A[j] = p.A;
+    f[j] = p.f;
+    y_wheel[j] = p.y_wheel;
   }
 };
 
@@ -131,6 +147,7 @@ class StripContactTable {
   struct Entry {
     double gap, dgap, angle, dangle, lateral, dlateral, lead, dlead, height, dheight, A, dA, f, df;
   };
+  static constexpr int kLanes = 4;     // strips per vector instruction in strips() (AVX2 doubles)
   static constexpr int kColumns = 14;  // in Entry's order: value, y-slope of gap, angle, lateral, lead, height, A, f
   static constexpr int kGap = 0, kAngle = 1, kLateral = 2, kLead = 3, kHeight = 4, kA = 5, kF = 6;  // quantity q: columns 2q, 2q+1
   const double* column(int c) const { return cols_.data() + std::size_t(c) * entries_; }

@@ -89,7 +89,7 @@ WheelsetContactResult solve_position(const WheelsetContactSetup& s, const contac
         if (set.n == contact::StripSet::kMax)
           throw InputError("wheelset contact: more than " + std::to_string(contact::StripSet::kMax) +
                            " strips near the contact at y = " + num(pos.y) + " m: use a wider strip (option strip)");
-        contact::StripPoint& q = set.add();
+        contact::StripPoint q;
         q.index = index;
         q.gap = std::max(0.0, p.gap);
         q.angle = sg * p.angle;
@@ -99,6 +99,7 @@ WheelsetContactResult solve_position(const WheelsetContactSetup& s, const contac
         q.A = p.A;
         q.f = contact::StripContactTable::winkler_factor(p.B / p.A);
         q.y_wheel = p.y_wheel;
+        set.add(q);
       }
       if (set.n == 0)
         throw InputError("wheelset contact: y = " + num(pos.y) + " m, yaw = " + num(pos.yaw) + " rad: the " +
@@ -130,9 +131,9 @@ WheelsetContactResult solve_position(const WheelsetContactSetup& s, const contac
           // The profile positions of the patch centre: the strip nearest to its lateral position.
           double best = 1e9;
           for (int j = 0; j < set.n; ++j)
-            if (std::abs(set.s[j].lateral - g.lateral) < best) {
-              best = std::abs(set.s[j].lateral - g.lateral);
-              P.y_wheel = set.s[j].y_wheel;
+            if (std::abs(set.lateral[j] - g.lateral) < best) {
+              best = std::abs(set.lateral[j] - g.lateral);
+              P.y_wheel = set.y_wheel[j];
             }
           P.y_rail = sg * P.y_track - geo.rail_offset();  // placed (inclined) rail profile, field side positive
           P.creep = wheel_creepages(k, g, int(sg));

@@ -41,7 +41,7 @@ void shares(const contact::StripSet& s, int jb, int je, double w, double dphi_si
             StripWork& x) {
   const int n = je;
   auto make_exact = [&](int j, double u) {
-    const contact::StripPoint& q = s.s[j];
+    const contact::StripPoint q = s[j];
     double c;
     if (cos_cache) {
       if (std::isnan(cos_cache[j])) cos_cache[j] = cos_angle(q.angle);
@@ -56,7 +56,7 @@ void shares(const contact::StripSet& s, int jb, int je, double w, double dphi_si
   };
   bool any = false;
   for (int j = jb; j < n; ++j) {
-    const contact::StripPoint& q = s.s[j];
+    const contact::StripPoint q = s[j];
     const double u = w - dphi_side * q.lateral;
     x.W[j] = 0.0;
     x.dW[j] = 0.0;
@@ -71,15 +71,15 @@ void shares(const contact::StripSet& s, int jb, int je, double w, double dphi_si
   if (!any) return;
   for (int j = jb; j < n; ++j) {
     if (x.exact[j]) continue;
-    const bool left = j > jb && x.exact[j - 1] && x.p[j - 1] > 0.0 && s.s[j].index == s.s[j - 1].index + 1;
-    const bool right = j + 1 < n && x.exact[j + 1] && x.p[j + 1] > 0.0 && s.s[j + 1].index == s.s[j].index + 1;
-    if (left || right) make_exact(j, w - dphi_side * s.s[j].lateral);
+    const bool left = j > jb && x.exact[j - 1] && x.p[j - 1] > 0.0 && s.index[j] == s.index[j - 1] + 1;
+    const bool right = j + 1 < n && x.exact[j + 1] && x.p[j + 1] > 0.0 && s.index[j + 1] == s.index[j] + 1;
+    if (left || right) make_exact(j, w - dphi_side * s.lateral[j]);
   }
   const double d = s.width;
   for (int j = jb; j + 1 < n; ++j) {
     const double pa = x.p[j], pb = x.p[j + 1];
     if (!(pa > 0.0 || pb > 0.0)) continue;
-    if (s.s[j + 1].index != s.s[j].index + 1) continue;  // not neighbours
+    if (s.index[j + 1] != s.index[j] + 1) continue;  // not neighbours
     if (pa > 0.0 && pb > 0.0) {  // trapezoid, half to each end
       x.W[j] += 0.5 * d * x.k[j] * pa;
       x.W[j + 1] += 0.5 * d * x.k[j + 1] * pb;
@@ -127,12 +127,12 @@ void semi_hertz_axes(const contact::StripSet& s, int jb, int je, int j, int e, c
   // half-length squared per strip, x_j^2 = g_j / (c_A A_j); A_j <= 0 (a strip
   // of the run with no longitudinal curvature of its own) takes the patch's A.
   auto g_over_curv = [&](int q) {
-    const double Aq = s.s[q].A > 0.0 ? s.s[q].A : A;
+    const double Aq = s.A[q] > 0.0 ? s.A[q] : A;
     return (x.p[q] - shift) / (cA * Aq);
   };
   double area = 0.0, amax = 0.0;
-  const int lo = (j > jb && s.s[j - 1].index + 1 == s.s[j].index) ? j - 1 : j;
-  const int hi = (e + 1 < je && s.s[e + 1].index == s.s[e].index + 1) ? e + 1 : e;
+  const int lo = (j > jb && s.index[j - 1] + 1 == s.index[j]) ? j - 1 : j;
+  const int hi = (e + 1 < je && s.index[e + 1] == s.index[e] + 1) ? e + 1 : e;
   for (int q = lo; q <= hi; ++q) {
     const double u = g_over_curv(q);
     if (u > 0.0) amax = std::max(amax, std::sqrt(u));
@@ -169,7 +169,7 @@ void loads_from_shares(const contact::StripSet& s, int jb, int je, const StripWo
     double N = 0, ang = 0, lat = 0, lead = 0, h = 0, A = 0, rw = 0, vert = 0, dvert = 0, pmax = 0;
     int e = j;
     for (;;) {
-      const contact::StripPoint& q = s.s[e];
+      const contact::StripPoint q = s[e];
       const double W = x.W[e];
       N += W;
       ang += W * q.angle;
@@ -182,7 +182,7 @@ void loads_from_shares(const contact::StripSet& s, int jb, int je, const StripWo
       const double ct = phi_side == 0.0 ? x.cd[e] : std::cos(q.angle + phi_side);
       vert += W * ct;
       dvert += x.dW[e] * ct;
-      if (e + 1 < je && s.s[e + 1].index == q.index + 1 && x.W[e + 1] > 0.0) ++e;
+      if (e + 1 < je && s.index[e + 1] == q.index + 1 && x.W[e + 1] > 0.0) ++e;
       else break;
     }
     out.vertical += vert;
@@ -203,7 +203,7 @@ void loads_from_shares(const contact::StripSet& s, int jb, int je, const StripWo
       const double half = 0.5 * pmax;
       double width = 0.0;
       for (int q = j; q <= e + 1 && q < je; ++q) {  // segments [q-1, q] inside the run and its edges
-        if (q == 0 || s.s[q].index != s.s[q - 1].index + 1) continue;
+        if (q == 0 || s.index[q] != s.index[q - 1] + 1) continue;
         const double pa = x.p[q - 1] - half, pb = x.p[q] - half;
         if (pa > 0 && pb > 0) width += s.width;
         else if (pa > 0 || pb > 0) width += s.width * std::max(pa, pb) / std::abs(pa - pb);
@@ -242,13 +242,13 @@ double strip_approach_for_load(const contact::StripSet& s, double Q, double phi_
   bool linked[contact::StripSet::kMax];  // strips q and q+1 are neighbours
   double vmin = 1e9;  // vertical approach at which the first strip touches (g_j / cos >= g_j)
   for (int q = 0; q < n; ++q) {
-    const contact::StripPoint& sp = s.s[q];
+    const contact::StripPoint sp = s[q];
     const double c = cos_angle(sp.angle);
     cos_cache[q] = c;
     cg[q] = sp.gap;
     ck[q] = 0.5 * s.width * Es * sp.f;
     cv[q] = phi_side == 0.0 ? c : std::cos(sp.angle + phi_side);
-    linked[q] = q + 1 < n && s.s[q + 1].index == sp.index + 1;
+    linked[q] = q + 1 < n && s.index[q + 1] == sp.index + 1;
     if (sp.gap < vmin) vmin = std::min(vmin, sp.gap / c);  // gap / c >= gap
   }
   const double* cc = cos_cache;
@@ -303,7 +303,7 @@ double strip_approach_for_load(const contact::StripSet& s, double Q, double phi_
   {
     int a = n, b = -1;
     for (int j = 0; j < n; ++j)
-      if (s.s[j].gap < w) {
+      if (s.gap[j] < w) {
         a = std::min(a, j);
         b = j;
       }

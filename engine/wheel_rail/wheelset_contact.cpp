@@ -192,7 +192,7 @@ bool distributed_loads(const Model& model, Data& d, int w, const WheelsetKinemat
     geo.strips(side * k.y, side * k.psi, kLateralFirstCutoff, strips[i]);
     double num = 0.0, den = 0.0, vmin = 1e9, amin = geo.l0();
     for (int j = 0; j < strips[i].n; ++j) {
-      const contact::StripPoint& q = strips[i].s[j];
+      const contact::StripPoint q = strips[i][j];
       const double u = 1.0 - q.gap / 2e-4;
       if (u > 0.0) {
         num += u * u * q.lateral;

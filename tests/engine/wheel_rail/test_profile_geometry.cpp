@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <optional>
 
 #include "contact/geometry/profile.hpp"
 #include "contact/hertz.hpp"
@@ -100,7 +101,7 @@ TEST_CASE("profile geometry: the strip table matches the exact search between it
       g.strips(y, yaw, 0.2e-3, s);
       REQUIRE(s.n > 0);
       for (int j = 0; j < s.n; ++j) {
-        const contact::StripPoint& q = s.s[j];
+        const contact::StripPoint q = s[j];
         if (q.gap > 0.2e-3) continue;
         const contact::ContactPoint p =
             exact.point_at(contact::Side::left, g.table().strip_parameter(q.index), y, c.z[0], c.roll, yaw);
@@ -137,10 +138,10 @@ TEST_CASE("profile geometry: every strip quantity has a continuous slope across 
     const double v[7] = {p.gap, p.angle, p.lateral, p.lead, p.height, p.A, p.f};
     return v[f];
   };
-  auto find = [](const contact::StripSet& set, int index) -> const contact::StripPoint* {
+  auto find = [](const contact::StripSet& set, int index) -> std::optional<contact::StripPoint> {
     for (int q = 0; q < set.n; ++q)
-      if (set.s[q].index == index) return &set.s[q];
-    return nullptr;
+      if (set.index[q] == index) return set[q];
+    return std::nullopt;
   };
   int checked = 0, jumping_secants = 0;
   for (double node : {-0.0061, -0.0021, 0.0, 0.0013, 0.0047, 0.0060, 0.0063, 0.0072})
@@ -149,10 +150,10 @@ TEST_CASE("profile geometry: every strip quantity has a continuous slope across 
       const double ys[5] = {node - cell, node - h, node, node + h, node + cell};
       for (int e = 0; e < 5; ++e) g.strips(ys[e], yaw, 0.5e-3, at[e]);
       for (int j = 0; j < at[2].n; ++j) {
-        const contact::StripPoint& m = at[2].s[j];
+        const contact::StripPoint m = at[2][j];
         if (m.gap > 0.2e-3) continue;
-        const contact::StripPoint* p[5] = {find(at[0], m.index), find(at[1], m.index), &m, find(at[3], m.index),
-                                           find(at[4], m.index)};
+        const std::optional<contact::StripPoint> p[5] = {find(at[0], m.index), find(at[1], m.index), m,
+                                                         find(at[3], m.index), find(at[4], m.index)};
         if (!p[0] || !p[1] || !p[3] || !p[4]) continue;
         for (int f = 0; f < 7; ++f) {
           const double secl = (field(m, f) - field(*p[0], f)) / cell, secr = (field(*p[4], f) - field(m, f)) / cell;
@@ -191,8 +192,8 @@ TEST_CASE("profile geometry: the right wheel at -y, -yaw mirrors the left wheel"
       g.strips(-y, -yaw, ProfileGeometry::kGapCutoff, s);
       int best = 0;
       for (int j = 1; j < s.n; ++j)
-        if (std::abs(s.s[j].y_wheel - right.y_wheel) < std::abs(s.s[best].y_wheel - right.y_wheel)) best = j;
-      const contact::StripPoint& q = s.s[best];
+        if (std::abs(s.y_wheel[j] - right.y_wheel) < std::abs(s.y_wheel[best] - right.y_wheel)) best = j;
+      const contact::StripPoint q = s[best];
       INFO("y = " << y * 1e3 << " mm, yaw = " << yaw * 1e3 << " mrad");
       if (std::abs(q.y_wheel - right.y_wheel) > 0.6e-3) continue;
       CHECK(q.angle == Approx(-right.angle).margin(0.03));             // the right wheel's angle is negative

@@ -19,7 +19,7 @@ contact::StripSet quadratic(double A, double B, double d, int half, double offse
   contact::StripSet s;
   s.width = d;
   for (int j = -half; j <= half && s.n < contact::StripSet::kMax; ++j) {
-    contact::StripPoint& p = s.add();
+    contact::StripPoint p;
     const double q = j * d;
     p.index = first_index + j + half;
     p.gap = B * q * q + offset;
@@ -28,6 +28,7 @@ contact::StripSet quadratic(double A, double B, double d, int half, double offse
     p.height = 0.46;
     p.A = A;
     p.f = contact::StripContactTable::winkler_factor(B / A);
+    s.add(p);
   }
   return s;
 }
@@ -62,7 +63,7 @@ TEST_CASE("strip contact: loads are continuous while a second patch closes and m
   contact::StripSet s;
   s.width = d;
   for (int j = 0; j <= 100; ++j) {
-    contact::StripPoint& p = s.add();
+    contact::StripPoint p;
     const double q = j * d;
     const double g1 = B * q * q, g2 = B * (q - 0.02) * (q - 0.02) * 1.0 + 30e-6;
     p.index = j;
@@ -72,6 +73,7 @@ TEST_CASE("strip contact: loads are continuous while a second patch closes and m
     p.height = 0.46;
     p.A = A;
     p.f = contact::StripContactTable::winkler_factor(B / A);
+    s.add(p);
   }
   engine::StripLoads L;
   double prev = 0.0, largest_step = 0.0;
@@ -137,8 +139,8 @@ TEST_CASE("semi-Hertzian patch: area and length follow a varying longitudinal cu
     const double d = std::sqrt(h0.approach / B) / 60.0;
     contact::StripSet s = quadratic(A0, B, d, 110);
     for (int j = 0; j < s.n; ++j) {
-      const double q = s.s[j].lateral - 0.75;
-      s.s[j].A = A0 * (1.0 + c * q / h0.b);
+      const double q = s.lateral[j] - 0.75;
+      s.A[j] = A0 * (1.0 + c * q / h0.b);
     }
     engine::StripLoads Lh, Ls;
     engine::strip_approach_for_load(s, N, 0.0, Es(m), Lh, engine::PatchShape::hertz);
