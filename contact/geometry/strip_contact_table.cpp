@@ -10,8 +10,10 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <memory>
 
 #include <boost/math/interpolators/cardinal_cubic_b_spline.hpp>
+#include <boost/math/interpolators/cubic_hermite.hpp>
 
 #include "contact/hertz.hpp"
 #include "core/atomic_file.hpp"
@@ -71,8 +73,20 @@ class HertzRatioTable {
     }
     lng_ = lg;
     spline_ = boost::math::interpolators::cardinal_cubic_b_spline<double>(lg.begin(), lg.end(), lo_, h_);
-    alpha_ = boost::math::interpolators::cardinal_cubic_b_spline<double>(al.begin(), al.end(), lo_, h_);
-    beta_ = boost::math::interpolators::cardinal_cubic_b_spline<double>(be.begin(), be.end(), lo_, h_);
+    // The semi-axis factors are evaluated per patch and right-hand side: the
+    // same cubic splines (interpolating, so cubic per cell with the spline's
+    // node values and slopes) held in Hermite form, a few dozen instructions
+    // per evaluation instead of Boost's B-spline basis sums.
+    const boost::math::interpolators::cardinal_cubic_b_spline<double> alpha(al.begin(), al.end(), lo_, h_),
+        beta(be.begin(), be.end(), lo_, h_);
+    std::vector<double> dal(n), dbe(n);
+    for (int i = 0; i < n; ++i) {
+      dal[std::size_t(i)] = alpha.prime(lo_ + i * h_);
+      dbe[std::size_t(i)] = beta.prime(lo_ + i * h_);
+    }
+    alpha_ = std::make_unique<Hermite>(std::move(al), std::move(dal), lo_, h_);
+    beta_ = std::make_unique<Hermite>(std::move(be), std::move(dbe), lo_, h_);
+    axes_hi_ = std::min(alpha_->domain().second, beta_->domain().second);  // hi_ within Boost's rounding
   }
   double g(double ratio) const { return std::exp(spline_(std::clamp(std::log(ratio), lo_, hi_))); }
   double ratio(double g) const {
@@ -89,13 +103,16 @@ class HertzRatioTable {
   }
 
   void axes(double ratio, double& a, double& b) const {
-    const double u = std::clamp(std::log(ratio), lo_, hi_);
-    a = alpha_(u);
-    b = beta_(u);
+    const double u = std::clamp(std::log(ratio), lo_, axes_hi_);
+    a = (*alpha_)(u);
+    b = (*beta_)(u);
   }
 
  private:
-  boost::math::interpolators::cardinal_cubic_b_spline<double> spline_, alpha_, beta_;
+  using Hermite = boost::math::interpolators::cardinal_cubic_hermite<std::vector<double>>;
+  boost::math::interpolators::cardinal_cubic_b_spline<double> spline_;
+  std::unique_ptr<Hermite> alpha_, beta_;
+  double axes_hi_ = 0.0;
   std::vector<double> lng_;
   double lo_ = 0.0, hi_ = 0.0, h_ = 1.0;
 };
@@ -411,7 +428,9 @@ void StripContactTable::strips(double y, double psi, double cutoff, StripSet& ou
   // (linear in psi^2 between them): weights c[0..3] at node k, c[4..7] at
   // node k + 1. interpolate() sums them over strips [q0, q0 + cnt) into
   // dst[0, cnt), one quantity at a time (columns: vectorised over the strips).
-  auto interpolate = [&](int quantity, const double* c, int q0, int cnt, double* __restrict dst) {
+  // (Inlined always, so that it is compiled for each target_clones copy.)
+  auto interpolate = [&](int quantity, const double* c, int q0, int cnt, double* __restrict dst)
+                         __attribute__((always_inline)) {
     const double* __restrict v = column(2 * quantity) + q0;
     const double* __restrict d = column(2 * quantity + 1) + q0;
     const double c0 = c[0], c1 = c[1], c2 = c[2], c3 = c[3];

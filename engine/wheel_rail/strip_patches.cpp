@@ -252,11 +252,14 @@ double strip_approach_for_load(const contact::StripSet& s, double Q, double phi_
     if (sp.gap < vmin) vmin = std::min(vmin, sp.gap / c);  // gap / c >= gap
   }
   const double* cc = cos_cache;
+  // Vertical load and its derivative at w over strips [q0, q1) (segments
+  // whose both ends lie in the range).
+  int q0 = 0, q1 = n;
   auto vertical = [&](double w, double& V, double& dV) {
-    for (int q = 0; q < n; ++q) cp[q] = w * cc[q] - cg[q];
+    for (int q = q0; q < q1; ++q) cp[q] = w * cc[q] - cg[q];
     V = 0.0;
     dV = 0.0;
-    for (int q = 0; q + 1 < n; ++q) {
+    for (int q = q0; q + 1 < q1; ++q) {
       const double pa = cp[q], pb = cp[q + 1];
       if (!linked[q] || !(pa > 0.0 || pb > 0.0)) continue;
       if (pa > 0.0 && pb > 0.0) {
@@ -278,6 +281,20 @@ double strip_approach_for_load(const contact::StripSet& s, double Q, double phi_
     if (Vhi >= Q) break;
     lo = hi;
     hi = vmin + 2.0 * (hi - vmin);
+  }
+  // Below hi only strips penetrated at hi can be (p grows with w): the
+  // iterations run on those and one neighbour on each side.
+  {
+    int a = n, b = -1;
+    for (int q = 0; q < n; ++q)
+      if (cp[q] > 0.0) {
+        a = std::min(a, q);
+        b = q;
+      }
+    if (b >= 0) {
+      q0 = std::max(0, a - 1);
+      q1 = std::min(n, b + 2);
+    }
   }
   // First guess: Hertz's V = K (w - w0)^{3/2} through the bracket's top with
   // its slope there (w0 = hi - 1.5 V / V'; w0 = vmin without a slope).
