@@ -3,7 +3,8 @@
 // contact of a whole wheelset at given poses (engine/analysis/
 // wheelset_contact_cases.hpp), one row per position: the total force of each
 // wheel on its rail in railsim's track frame and, per contact patch, its
-// positions on wheel and rail, rolling radius, contact angle, semi-axes,
+// positions on wheel and rail, rolling radius, contact angle (track frame:
+// a left flange > 0, a right flange < 0, as `railsim geometry`), semi-axes,
 // normal load and creepages. CASES.yaml:
 //   wheel: S1002            # profile file (relative to CASES.yaml) or shipped name
 //   rail: UIC60
@@ -18,6 +19,10 @@
 //   strip: 2.5e-4           # [m], optional strip width of the normal contact
 //   positions:              # y toward the left wheel [m], yaw leading end to the left [rad], Fz per wheel [N]
 //     - {y: 0.001, yaw: 0.0024, Fz: 1.0e4, roll: -1.1e-4, omega: 4.348}   # roll [rad], omega [rad/s] optional
+//     - {y: 0.005, Fz: 6.0e4, omega: free}   # the free axle's speed (no torque from the creep forces)
+// Without omega the axle turns at V / r0 (driven: in flange contact a large
+// net longitudinal force); `omega: free` finds the speed of a free axle. The
+// CSV's column omega is the speed used.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -82,6 +87,7 @@ int run_wheelset_contact(const WheelsetContactArgs& a) {
   }
   s.speed = root.has("speed") ? root.in_range("speed", 0.0, 200.0, true) : 1.0;
   if (root.has("strip")) s.strip = root.in_range("strip", 2e-5, 2e-3);
+  s.where = a.cases;
   s.model = a.model;
   s.model_options.grid = a.grid;
   s.model_options.tolerance = a.tolerance;
@@ -100,8 +106,12 @@ int run_wheelset_contact(const WheelsetContactArgs& a) {
       p.has_roll = true;
     }
     if (n.has("omega")) {
-      p.omega = n.in_range("omega", 0.0, 1e4, true);
-      p.has_omega = true;
+      if (n.at("omega").is_scalar() && n.at("omega").as_string() == "free") {
+        p.free_rolling = true;  // the free axle's speed, found
+      } else {
+        p.omega = n.in_range("omega", 0.0, 1e4, true);
+        p.has_omega = true;
+      }
     }
     pos.push_back(p);
   }
@@ -111,7 +121,7 @@ int run_wheelset_contact(const WheelsetContactArgs& a) {
   for (const auto& r : res)
     for (const auto& w : r.wheel) patch_columns = std::max(patch_columns, int(w.patches.size()));
 
-  std::vector<std::string> cols = {"y", "yaw", "roll"};
+  std::vector<std::string> cols = {"y", "yaw", "roll", "omega"};
   for (const char* w : {"left", "right"})
     for (const char* f : {"Fx", "Fy", "Fz", "patches"}) cols.push_back(std::string(w) + "_" + f);
   const char* fields[] = {"N", "y_wheel", "y_rail", "y_track", "x_track", "rolling_radius", "contact_angle",
@@ -121,7 +131,7 @@ int run_wheelset_contact(const WheelsetContactArgs& a) {
       for (const char* f : fields) cols.push_back(std::string(w) + std::to_string(k) + "_" + f);
   results::CsvWriter csv(a.out, cols, false, 0, 10);
   for (const auto& r : res) {
-    csv.cell(r.position.y).cell(r.position.yaw).cell(r.roll);
+    csv.cell(r.position.y).cell(r.position.yaw).cell(r.roll).cell(r.omega);
     for (const auto& w : r.wheel) csv.cell(w.Fx).cell(w.Fy).cell(w.Fz).cell(long(w.patches.size()));
     for (const auto& w : r.wheel)
       for (int k = 0; k < patch_columns; ++k) {
