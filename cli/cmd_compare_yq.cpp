@@ -105,7 +105,9 @@ void register_compare_yq(CLI::App& app, CommandRunner& run) {
   cmd->add_option("scenario", a->scenario, "Scenario YAML file the runs were made with (wheelsets, flange angle, mu)")
       ->required();
   cmd->add_option("runs", a->runs, "Output folders of `railsim run` (each with channels.csv)")->required();
-  cmd->add_option("--labels", a->labels, "Comma-separated labels of the runs (default: the folder names, with their parent folders where names repeat)");
+  cmd->add_option("--labels", a->labels,
+                  "Comma-separated labels of the runs (default: the folder names, with their parent folders where "
+                  "names repeat)");
   cmd->add_option("--wheelset", a->wheelset, "Wheelset to compare (default: the leading one)");
   cmd->add_option("--out", a->out, "Output folder")->capture_default_str();
   cmd->callback([a, &run] { run = [a] { return run_compare_yq(*a); }; });

@@ -166,8 +166,9 @@ contact::TrackSetup read_track_setup(const InputNode& g, const std::string& radi
   // The flange backs lie inside the running edges (1.360 m within 1.435 m).
   if (!(t.flange_back < t.gauge)) {
     const InputNode& n = g.has("flange_back") ? g.at("flange_back") : g.at("gauge");
-    n.fail("flange_back " + config::format_number(t.flange_back) + " m" + (g.has("flange_back") ? "" : " (the default)") +
-           " is not smaller than gauge " + config::format_number(t.gauge) + " m" + (g.has("gauge") ? "" : " (the default)") +
+    n.fail("flange_back " + config::format_number(t.flange_back) + " m" +
+           (g.has("flange_back") ? "" : " (the default)") + " is not smaller than gauge " +
+           config::format_number(t.gauge) + " m" + (g.has("gauge") ? "" : " (the default)") +
            ": the flange backs lie inside the rails' running edges (1.360 m within 1.435 m for standard gauge)");
   }
   return t;

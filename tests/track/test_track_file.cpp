@@ -164,7 +164,8 @@ TEST_CASE("a measured record reaching beyond the track is said, one in mm refuse
   REQUIRE(t.warnings().size() == 1);
   CHECK_THAT(t.warnings()[0], Catch::Contains("t.yaml:8: irregularities[0] (measured): key 'file':") &&
                                   Catch::Contains("measured_long.csv covers s = 0 .. 400 m, the track 0 .. 270 m") &&
-                                  Catch::Contains("130 m beyond its end are not used (55 of 81 rows lie on the track)"));
+                                  Catch::Contains("130 m beyond its end are not used (55 of 81 rows lie on the "
+                                                  "track)"));
   // The record still applies on the track.
   CHECK(t.at(10.0).irregularity[Channel::lateral] == Approx(2.0e-3).epsilon(1e-12));
   // Placed 20 m early: both ends said.

@@ -220,7 +220,8 @@ TEST_CASE("wheelset-contact: bad cases exit 2 naming the key", "[engine][analysi
   };
   for (const Case& c : {Case{head + "positions:\n  - {y: 0.001, Fz: -1}\n", "Fz"},
                         // 1e-6 N: a 37 nm patch, MIM 39 s and 730 MB for one position.
-                        Case{head + "positions:\n  - {y: 0.001, Fz: 1e-6}\n", "key 'positions[0].Fz': expected a number in [1, 1000000]"},
+                        Case{head + "positions:\n  - {y: 0.001, Fz: 1e-6}\n",
+                             "key 'positions[0].Fz': expected a number in [1, 1000000]"},
                         Case{head + "positions:\n  - {y: 0.001, Fz: 1e4, pitch: 1}\n", "pitch"},
                         Case{head + "positions:\n  - {y: 0.5, Fz: 1e4}\n", "positions[0].y"},
                         Case{head + "positions:\n  - {y: .nan, Fz: 1e4}\n", "positions[0].y"},
@@ -388,5 +389,6 @@ TEST_CASE("wheelset-contact: omega free finds the free axle's speed; V / r0 driv
   std::ofstream(dir + "/bad.yaml") << head << "positions:\n  - {y: 0.005, Fz: 6e4, omega: loose}\n";
   const auto bad = test::run_railsim("wheelset-contact " + dir + "/bad.yaml --out " + dir + "/bad.csv");
   CHECK(bad.exit_code == 2);
-  CHECK_THAT(bad.output, Catch::Contains("bad.yaml:6: key 'positions[0].omega': expected a rolling speed [rad/s] or free"));
+  CHECK_THAT(bad.output,
+             Catch::Contains("bad.yaml:6: key 'positions[0].omega': expected a rolling speed [rad/s] or free"));
 }
