@@ -5,6 +5,7 @@
 // DIR/yq_comparison.csv (one row per run and wheel: peak, place, time, whether
 // and over how many metres / seconds the limit is exceeded) and
 // DIR/summary.json, and prints the table.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -74,7 +75,10 @@ int run_compare_yq(const CompareYqArgs& a) {
   results::draw(engine::yq_comparison_chart(c), a.out + "/yq_comparison.png");
   std::printf("\nrailsim compare-yq: %s, leading wheelset %s, Nadal limit %.3g (flange angle %.1f deg, mu %.2g)\n\n",
               c.scenario.c_str(), c.wheelset.c_str(), c.nadal, c.flange_angle * 180.0 / M_PI, c.mu);
-  std::printf("  %-24s %-6s %9s %10s %9s %s\n", "run", "wheel", "max|Y/Q|", "at [m]", "at [s]", "Nadal exceeded");
+  // The run column as wide as the longest label (cut at 24 characters, "k1/out" rows could not be told apart).
+  int width = 24;
+  for (const auto& r : c.runs) width = std::max(width, int(r.label.size()));
+  std::printf("  %-*s %-6s %9s %10s %9s %s\n", width, "run", "wheel", "max|Y/Q|", "at [m]", "at [s]", "Nadal exceeded");
   for (const auto& r : c.runs)
     for (int s = 0; s < 2; ++s) {
       const auto& w = r.wheel[s];
@@ -82,7 +86,7 @@ int run_compare_yq(const CompareYqArgs& a) {
       if (w.exceeded)
         std::snprintf(ex, sizeof ex, "yes, over %.2f m (%.3f s), %.1f..%.1f m", w.exceed_length, w.exceed_time,
                       w.first_exceed, w.last_exceed);
-      std::printf("  %-24s %-6s %9.3f %10.1f %9.2f %s\n", r.label.substr(0, 24).c_str(), s == 0 ? "left" : "right",
+      std::printf("  %-*s %-6s %9.3f %10.1f %9.2f %s\n", width, r.label.c_str(), s == 0 ? "left" : "right",
                   w.peak, w.peak_distance, w.peak_time, ex);
     }
   for (const auto& r : c.runs)
@@ -101,7 +105,9 @@ void register_compare_yq(CLI::App& app, CommandRunner& run) {
   cmd->add_option("scenario", a->scenario, "Scenario YAML file the runs were made with (wheelsets, flange angle, mu)")
       ->required();
   cmd->add_option("runs", a->runs, "Output folders of `railsim run` (each with channels.csv)")->required();
-  cmd->add_option("--labels", a->labels, "Comma-separated labels of the runs (default: the folder names)");
+  cmd->add_option("--labels", a->labels,
+                  "Comma-separated labels of the runs (default: the folder names, with their parent folders where "
+                  "names repeat)");
   cmd->add_option("--wheelset", a->wheelset, "Wheelset to compare (default: the leading one)");
   cmd->add_option("--out", a->out, "Output folder")->capture_default_str();
   cmd->callback([a, &run] { run = [a] { return run_compare_yq(*a); }; });

@@ -62,6 +62,7 @@ int run_track(const TrackOptions& o) {
                  seg.curvature_start(), seg.curvature_end(), seg.cant_start() * 1e3, seg.cant_end() * 1e3);
   }
   for (const auto& c : track.irregularities().components()) spdlog::info("  {}", c->describe());
+  for (const std::string& w : track.warnings()) spdlog::warn("{}", w);
 
   std::vector<std::string> cols = {"s",           "x",           "y",           "heading",        "curvature",
                                    "dcurvature",  "cant_mm",     "cant_angle",  "dcant_angle",    "lateral_mm",

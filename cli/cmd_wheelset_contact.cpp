@@ -3,7 +3,8 @@
 // contact of a whole wheelset at given poses (engine/analysis/
 // wheelset_contact_cases.hpp), one row per position: the total force of each
 // wheel on its rail in railsim's track frame and, per contact patch, its
-// positions on wheel and rail, rolling radius, contact angle, semi-axes,
+// positions on wheel and rail, rolling radius, contact angle (track frame:
+// a left flange > 0, a right flange < 0, as `railsim geometry`), semi-axes,
 // normal load and creepages. CASES.yaml:
 //   wheel: S1002            # profile file (relative to CASES.yaml) or shipped name
 //   rail: UIC60
@@ -18,9 +19,14 @@
 //   strip: 2.5e-4           # [m], optional strip width of the normal contact
 //   positions:              # y toward the left wheel [m], yaw leading end to the left [rad], Fz per wheel [N]
 //     - {y: 0.001, yaw: 0.0024, Fz: 1.0e4, roll: -1.1e-4, omega: 4.348}   # roll [rad], omega [rad/s] optional
+//     - {y: 0.005, Fz: 6.0e4, omega: free}   # the free axle's speed (no torque from the creep forces)
+// Without omega the axle turns at V / r0 (driven: in flange contact a large
+// net longitudinal force); `omega: free` finds the speed of a free axle. The
+// CSV's column omega is the speed used.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 
@@ -82,6 +88,7 @@ int run_wheelset_contact(const WheelsetContactArgs& a) {
   }
   s.speed = root.has("speed") ? root.in_range("speed", 0.0, 200.0, true) : 1.0;
   if (root.has("strip")) s.strip = root.in_range("strip", 2e-5, 2e-3);
+  s.where = a.cases;
   s.model = a.model;
   s.model_options.grid = a.grid;
   s.model_options.tolerance = a.tolerance;
@@ -94,14 +101,27 @@ int run_wheelset_contact(const WheelsetContactArgs& a) {
     p.where = n.where() + ": key 'positions[" + std::to_string(pos.size()) + "]'";
     p.y = n.in_range("y", -0.03, 0.03);
     p.yaw = n.has("yaw") ? n.in_range("yaw", -0.1, 0.1) : 0.0;
-    p.Fz = n.in_range("Fz", 0.0, 1e6, true);
+    // At least 1 N: 1e-6 N gave a 37 nm patch (a/b 200) that took MIM 39 s and 730 MB.
+    p.Fz = n.in_range("Fz", 1.0, 1e6);
     if (n.has("roll")) {
       p.roll = n.in_range("roll", -0.1, 0.1);
       p.has_roll = true;
     }
     if (n.has("omega")) {
-      p.omega = n.in_range("omega", 0.0, 1e4, true);
-      p.has_omega = true;
+      const config::InputNode o = n.at("omega");
+      if (o.is_scalar() && o.as_string() == "free") {
+        p.free_rolling = true;  // the free axle's speed, found
+      } else {
+        if (o.is_scalar()) {  // a word other than free: say that free is the word
+          const std::string v = o.as_string();
+          char* end = nullptr;
+          std::strtod(v.c_str(), &end);
+          if (v.empty() || end != v.c_str() + v.size())
+            o.fail("expected a rolling speed [rad/s] or free (got " + o.text() + ")");
+        }
+        p.omega = o.as_in_range(0.0, 1e4, true);
+        p.has_omega = true;
+      }
     }
     pos.push_back(p);
   }
@@ -111,7 +131,7 @@ int run_wheelset_contact(const WheelsetContactArgs& a) {
   for (const auto& r : res)
     for (const auto& w : r.wheel) patch_columns = std::max(patch_columns, int(w.patches.size()));
 
-  std::vector<std::string> cols = {"y", "yaw", "roll"};
+  std::vector<std::string> cols = {"y", "yaw", "roll", "omega"};
   for (const char* w : {"left", "right"})
     for (const char* f : {"Fx", "Fy", "Fz", "patches"}) cols.push_back(std::string(w) + "_" + f);
   const char* fields[] = {"N", "y_wheel", "y_rail", "y_track", "x_track", "rolling_radius", "contact_angle",
@@ -121,7 +141,7 @@ int run_wheelset_contact(const WheelsetContactArgs& a) {
       for (const char* f : fields) cols.push_back(std::string(w) + std::to_string(k) + "_" + f);
   results::CsvWriter csv(a.out, cols, false, 0, 10);
   for (const auto& r : res) {
-    csv.cell(r.position.y).cell(r.position.yaw).cell(r.roll);
+    csv.cell(r.position.y).cell(r.position.yaw).cell(r.roll).cell(r.omega);
     for (const auto& w : r.wheel) csv.cell(w.Fx).cell(w.Fy).cell(w.Fz).cell(long(w.patches.size()));
     for (const auto& w : r.wheel)
       for (int k = 0; k < patch_columns; ++k) {

@@ -19,6 +19,9 @@ struct IrregularityContext {
   double track_length = 0.0;  // [m]
   double rail_spacing = 1.5;  // 2b [m]
   std::string base_dir;       // folder of the track file (relative data files)
+  // Legal but doubtful input ("file:line: key 'k': ..."), kept by the Track
+  // (Track::warnings); nullptr: not collected.
+  std::vector<std::string>* warnings = nullptr;
 };
 
 // Build a component from its YAML mapping (the `type` key is already known and

@@ -17,6 +17,10 @@ namespace {
 
 constexpr double kMaxIrregularity = 0.2;  // [m], the range of a cosine defect's amplitude (defects.cpp)
 constexpr double kMinRowSpacing = 1e-3;   // [m] between consecutive rows
+constexpr double kWarnOffTrack = 0.1;     // a record more than this fraction of the track off it is said
+constexpr double kWarnOffTrackMin = 1.0;  // [m], and at least this much
+constexpr double kMmRowSpacing = 10.0;    // [m] median row spacing of a record whose s is in mm (0.1-1 m -> 100-1000)
+constexpr double kMmReach = 10.0;         // track lengths past the end of such a record
 
 std::string trim(const std::string& t) {
   const auto b = t.find_first_not_of(" \t\r");
@@ -41,6 +45,43 @@ void smooth_step(double t, double& f, double& df) {
   t = std::clamp(t, 0.0, 1.0);
   f = t * t * t * (10.0 + t * (-15.0 + 6.0 * t));
   df = 30.0 * t * t * (1.0 - t) * (1.0 - t);
+}
+
+// A record that reaches beyond the track: the part off the track is never
+// used. More than kWarnOffTrack of the track's length off it is said (file,
+// both ranges, what is unused); a record whose distances are clearly
+// millimetres (rows kMmRowSpacing or more apart, reaching more than
+// kMmReach track lengths past the end) is refused.
+void check_record_reach(const MeasuredTable& table, double offset, const IrregularityContext& context,
+                        const std::string& file, const config::InputNode& fnode) {
+  const double length = context.track_length;
+  if (!(length > 0.0)) return;
+  using config::format_number;
+  const double s0 = table.s.front() + offset, s1 = table.s.back() + offset;
+  const double before = std::max(0.0, -s0), after = std::max(0.0, s1 - length);
+  std::vector<double> spacing(table.s.size() - 1);
+  for (std::size_t i = 1; i < table.s.size(); ++i) spacing[i - 1] = table.s[i] - table.s[i - 1];
+  std::nth_element(spacing.begin(), spacing.begin() + std::ptrdiff_t(spacing.size() / 2), spacing.end());
+  const double median_spacing = spacing[spacing.size() / 2];
+  std::size_t on_track = 0;
+  for (double s : table.s) on_track += (s + offset >= 0.0 && s + offset <= length) ? 1 : 0;
+  const std::string ranges = file + " covers s = " + format_number(s0) + " .. " + format_number(s1) + " m" +
+                             (offset != 0.0 ? " (offset " + format_number(offset) + " m)" : "") + ", the track 0 .. " +
+                             format_number(length) + " m";
+  char times[32];
+  std::snprintf(times, sizeof times, "%.3g", s1 / length);
+  if (median_spacing >= kMmRowSpacing && after > kMmReach * length)
+    fnode.fail(ranges + ": the record reaches " + times + " times the track's length, with rows " +
+               format_number(median_spacing) + " m apart (records are sampled every 0.1-1 m): is column 's' in mm? "
+               "s is the distance in metres ('units' applies to the channels only)");
+  if (context.warnings && before + after > std::max(kWarnOffTrackMin, kWarnOffTrack * length)) {
+    std::string unused;
+    if (after > 0.0) unused = format_number(after) + " m beyond its end";
+    if (before > 0.0) unused += (unused.empty() ? "" : " and ") + format_number(before) + " m before its start";
+    context.warnings->push_back(fnode.where() + ": key 'file': " + ranges + ": " + unused + " are not used (" +
+                                std::to_string(on_track) + " of " + std::to_string(table.s.size()) +
+                                " rows lie on the track); check the record's distances and the offset");
+  }
 }
 
 }  // namespace
@@ -204,6 +245,7 @@ std::unique_ptr<IrregularityComponent> parse_measured_irregularity(const config:
         .fail("the record lies at s = " + config::format_number(s0) + " .. " + config::format_number(s1) +
               " m, outside the track (0 .. " + config::format_number(context.track_length) +
               " m): give an offset that places it on the track");
+  check_record_reach(table, offset, context, p.string(), fnode);
   const double span = table.s.back() - table.s.front();
   const double taper = node.has("taper") ? node.at("taper").as_in_range(0.0, 0.5 * span) : 0.0;
   const double scale = node.has("scale") ? node.at("scale").as_in_range(0.0, 100.0) : 1.0;

@@ -14,6 +14,11 @@
 // not overshoot the measured values and gives a continuous slope. Outside the
 // measured range the component is zero; an optional taper (quintic smooth-step
 // over `taper` metres at each end) removes the jump there.
+// Placed on a track (offset), a record wholly off the track is refused; one
+// reaching beyond it by more than 10 % of the track's length (and 1 m) is
+// accepted with a warning naming the file and both ranges (Track::warnings);
+// one whose distances are clearly in mm (rows 10 m or more apart, reaching
+// more than 10 track lengths past the end) is refused.
 #pragma once
 
 // Boost 1.74 pchip.hpp calls an unqualified isnan(): <math.h> puts it in the global namespace.

@@ -6,12 +6,13 @@
 namespace railsim::track {
 
 Track::Track(std::string name, Alignment alignment, IrregularitySet irregularities, double gauge,
-             bool gauge_given)
+             bool gauge_given, std::vector<std::string> warnings)
     : name_(std::move(name)),
       alignment_(std::move(alignment)),
       irregularities_(std::move(irregularities)),
       gauge_(gauge),
-      gauge_given_(gauge_given) {}
+      gauge_given_(gauge_given),
+      warnings_(std::move(warnings)) {}
 
 double Track::cant_deficiency(double s, double speed) const {
   const AlignmentState a = alignment_.at(s);

@@ -22,6 +22,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "track/alignment.hpp"
 #include "track/irregularity.hpp"
@@ -36,8 +37,9 @@ struct TrackState : AlignmentState {
 class Track {
  public:
   // gauge_given: the track file states its gauge (else 1.435 m by default).
+  // warnings: legal but doubtful input found when the track was read.
   Track(std::string name, Alignment alignment, IrregularitySet irregularities, double gauge = 1.435,
-        bool gauge_given = false);
+        bool gauge_given = false, std::vector<std::string> warnings = {});
   Track(Track&&) noexcept = default;
   Track& operator=(Track&&) noexcept = default;
   Track(const Track&) = delete;
@@ -66,6 +68,10 @@ class Track {
   double rail_spacing() const { return alignment_.rail_spacing(); }  // 2b [m]
   double gauge() const { return gauge_; }                            // nominal gauge [m]
   bool gauge_given() const { return gauge_given_; }                  // stated by the track file
+  // Legal but doubtful input of the track file, "file:line: ...: ..." (e.g. a
+  // measured record reaching beyond the track); the readers of a scenario
+  // record them in its warnings.
+  const std::vector<std::string>& warnings() const { return warnings_; }
   const Alignment& alignment() const { return alignment_; }
   const IrregularitySet& irregularities() const { return irregularities_; }
 
@@ -75,6 +81,7 @@ class Track {
   IrregularitySet irregularities_;
   double gauge_;
   bool gauge_given_ = false;
+  std::vector<std::string> warnings_;
 };
 
 }  // namespace railsim::track

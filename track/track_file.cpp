@@ -23,18 +23,22 @@ using config::InputNode;
 
 // Re-throw an InputError raised while reading one list item with the item
 // named after "file:line: ", e.g. "f.yaml:7: segments[2] (clothoid): key 'length': ...".
-[[noreturn]] void rethrow_with_label(const InputError& e, const std::string& file, const std::string& label) {
-  const std::string msg = e.what();
+// "file:line: what" -> "file:line: label: what" (else "label: what").
+std::string with_label(const std::string& msg, const std::string& file, const std::string& label) {
   const std::string head = file + ":";
   if (msg.rfind(head, 0) == 0) {
     std::size_t p = head.size();
     while (p < msg.size() && std::isdigit(static_cast<unsigned char>(msg[p]))) ++p;
     if (msg.compare(p, 2, ": ") == 0) {
       p += 2;
-      throw InputError(msg.substr(0, p) + label + ": " + msg.substr(p));
+      return msg.substr(0, p) + label + ": " + msg.substr(p);
     }
   }
-  throw InputError(label + ": " + msg);
+  return label + ": " + msg;
+}
+
+[[noreturn]] void rethrow_with_label(const InputError& e, const std::string& file, const std::string& label) {
+  throw InputError(with_label(e.what(), file, label));
 }
 
 // A segment as written in the file; clothoid ends are resolved afterwards.
@@ -189,11 +193,14 @@ Track load_track(const InputNode& root, const std::string& base_dir, const std::
   Alignment alignment(build_segments(root.at("segments"), root.file()), rail_spacing, start);
 
   IrregularitySet irregularities;
+  std::vector<std::string> warnings;
   if (auto irr = root.find("irregularities")) {
+    std::vector<std::string> item_warnings;
     IrregularityContext ctx;
     ctx.track_length = alignment.length();
     ctx.rail_spacing = rail_spacing;
     ctx.base_dir = base_dir;
+    ctx.warnings = &item_warnings;
     const auto items = irr->elements();
     for (std::size_t i = 0; i < items.size(); ++i) {
       const InputNode n(items[i].raw(), root.file(), "");
@@ -210,9 +217,11 @@ Track load_track(const InputNode& root, const std::string& base_dir, const std::
       } catch (const InputError& e) {
         rethrow_with_label(e, root.file(), label);
       }
+      for (const std::string& w : item_warnings) warnings.push_back(with_label(w, root.file(), label));
+      item_warnings.clear();
     }
   }
-  return Track(name, std::move(alignment), std::move(irregularities), gauge, root.has("gauge"));
+  return Track(name, std::move(alignment), std::move(irregularities), gauge, root.has("gauge"), std::move(warnings));
 }
 
 }  // namespace railsim::track

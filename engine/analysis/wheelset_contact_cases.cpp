@@ -1,6 +1,8 @@
 // Wheelset-level contact for given poses; see wheelset_contact_cases.hpp.
 #include "engine/analysis/wheelset_contact_cases.hpp"
 
+#include <boost/math/tools/roots.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -43,10 +45,32 @@ std::vector<WheelsetContactResult> wheelset_contact(const WheelsetContactSetup& 
   if (!(s.speed > 0.0 && std::isfinite(s.speed))) throw InputError("wheelset contact: speed must be positive");
   if (!(s.strip >= 2e-5 && s.strip <= 2e-3))
     throw InputError("wheelset contact: strip width " + num(s.strip) + " m: expected a value in [2e-5, 2e-3] m");
-  const contact::Profile wheel = contact::read_profile(s.wheel, contact::ProfileKind::wheel);
-  const contact::Profile rail = contact::read_profile(s.rail, contact::ProfileKind::rail);
-  s.track.validate();
-  const contact::WheelRailGeometry geo(wheel, rail, s.track);
+  // A set-up error names the case file and the key (or the set-up as a whole).
+  const std::string at = s.where.empty() ? std::string() : s.where + ": ";
+  auto located = [&](const std::string& key, auto&& make) {
+    try {
+      return make();
+    } catch (const InputError& e) {
+      throw InputError(at + (key.empty() ? std::string() : "key '" + key + "': ") + e.what());
+    }
+  };
+  const contact::Profile wheel =
+      located("wheel", [&] { return contact::read_profile(s.wheel, contact::ProfileKind::wheel); });
+  const contact::Profile rail =
+      located("rail", [&] { return contact::read_profile(s.rail, contact::ProfileKind::rail); });
+  located("", [&] { s.track.validate(); return 0; });
+  const contact::WheelRailGeometry geo = located("", [&] { return contact::WheelRailGeometry(wheel, rail, s.track); });
+  // The centred wheelset must sit on the rails: when it cannot, the set-up is
+  // wrong (gauge, flange back, back face, a rail profile given as the wheel),
+  // not the positions, which would each be blamed for it.
+  try {
+    (void)geo.solve(0.0, 0.0);
+  } catch (const InputError& e) {
+    throw InputError(at + "wheel " + s.wheel + " on rail " + s.rail + " with gauge " + num(s.track.gauge) +
+                     " m, flange_back " + num(s.track.flange_back) + " m, back_face " + num(s.track.back_face) +
+                     " m, inclination " + num(s.track.inclination) + " rad: the centred wheelset cannot sit on the "
+                     "rails (" + e.what() + "): check the gauge and flange-back spacing and the profiles");
+  }
   auto model = contact::make_tangential_model(s.model, s.model_options);
   auto ws = model->make_workspace();
   const double Es = s.material.combined_modulus();
@@ -75,114 +99,144 @@ WheelsetContactResult solve_position(const WheelsetContactSetup& s, const contac
     r.position = pos;
     const contact::WheelsetContact c = pos.has_roll ? geo.at_roll(pos.y, pos.yaw, pos.roll) : geo.solve(pos.y, pos.yaw);
     r.roll = c.roll;
-    for (int i = 0; i < 2; ++i) {
-      const contact::Side side = i == 0 ? contact::Side::left : contact::Side::right;
-      const double sg = i == 0 ? 1.0 : -1.0;
-      // Strips of this wheel at its touching height (engine sign of the angle:
-      // > 0 tilts the normal toward the track centre).
-      contact::StripSet set;
-      set.width = s.strip;
-      int index = 0;
-      for (double t = geo.wheel_t_min(); t <= geo.wheel_t_max(); t += s.strip, ++index) {
-        const contact::ContactPoint p = geo.point_at(side, t, pos.y, c.z[std::size_t(i)], c.roll, pos.yaw);
-        if (!(std::isfinite(p.gap) && p.gap < kStripGap)) continue;
-        if (set.n == contact::StripSet::kMax)
-          throw InputError("wheelset contact: more than " + std::to_string(contact::StripSet::kMax) +
-                           " strips near the contact at y = " + num(pos.y) + " m: use a wider strip (option strip)");
-        contact::StripPoint q;
-        q.index = index;
-        q.gap = std::max(0.0, p.gap);
-        q.angle = sg * p.angle;
-        q.lateral = sg * (p.y - pos.y);
-        q.lead = p.x * std::cos(pos.yaw) + (p.y - pos.y) * std::sin(pos.yaw);  // wheelset frame
-        q.height = p.height;
-        q.A = p.A;
-        q.f = contact::StripContactTable::winkler_factor(p.B / p.A);
-        q.y_wheel = p.y_wheel;
-        set.add(q);
-      }
-      if (set.n == 0)
-        throw InputError("wheelset contact: y = " + num(pos.y) + " m, yaw = " + num(pos.yaw) + " rad: the " +
-                         (i == 0 ? "left" : "right") + " wheel does not meet its rail");
-      // The wheelset rolling steadily (no rates).
-      WheelsetKinematics k;
-      k.V = s.speed;
-      k.Omega = pos.has_omega ? pos.omega : s.speed / s.track.r0;
-      k.y = pos.y;
-      k.psi = pos.yaw;
-      k.phi = c.roll;
-      // The wheel's patches, creep forces and total force on the rail when the
-      // normal loads' vertical components add up to Qn.
-      auto wheel_forces = [&](double Qn, WheelsetContactWheel& W) {
-        StripLoads L;
-        W = WheelsetContactWheel{};
-        W.approach = strip_approach_for_load(set, Qn, 0.0, Es, L);
-        double X = 0, Y = 0, Z = 0;
-        for (int p = 0; p < L.n; ++p) {
-          WheelsetContactPatch P;
-          ContactPointGeometry g = L.patch[p];
-          P.N = L.N[p];
-          P.contact_angle = g.contact_angle;
-          P.rolling_radius = g.rolling_radius;
-          P.a = g.semi_a;
-          P.b = g.semi_b;
-          P.y_track = pos.y + sg * g.lateral;
-          P.x_track = g.lead * std::cos(pos.yaw) - sg * g.lateral * std::sin(pos.yaw);  // back to the track frame
-          // The profile positions of the patch centre: the strip nearest to its lateral position.
-          double best = 1e9;
-          for (int j = 0; j < set.n; ++j)
-            if (std::abs(set.lateral[j] - g.lateral) < best) {
-              best = std::abs(set.lateral[j] - g.lateral);
-              P.y_wheel = set.y_wheel[j];
-            }
-          P.y_rail = sg * P.y_track - geo.rail_offset();  // placed (inclined) rail profile, field side positive
-          P.creep = wheel_creepages(k, g, int(sg));
-          contact::ContactInput in;
-          if (P.a > 0 && P.b > 0) in.patch = contact::hertz_from_semi_axes(P.a, P.b, P.N, s.material);
-          in.patch.Fz = P.N;
-          in.creep = P.creep;
-          in.material = s.material;
-          in.rolling_speed = s.speed;
-          P.forces = model.solve(in, ws);
-          const double ct = std::cos(g.contact_angle), st = std::sin(g.contact_angle);
-          X += P.forces.Fx - P.forces.Fy * pos.yaw * ct;
-          Y += P.forces.Fx * pos.yaw + P.forces.Fy * ct - sg * P.N * st;
-          Z += sg * P.forces.Fy * st + P.N * ct;
-          W.patches.push_back(P);
+    // Both wheels' patches and forces with the axle rolling at Omega.
+    auto solve_wheels = [&](double Omega) {
+      r.omega = Omega;
+      for (int i = 0; i < 2; ++i) {
+        const contact::Side side = i == 0 ? contact::Side::left : contact::Side::right;
+        const double sg = i == 0 ? 1.0 : -1.0;
+        // Strips of this wheel at its touching height (engine sign of the angle:
+        // > 0 tilts the normal toward the track centre).
+        contact::StripSet set;
+        set.width = s.strip;
+        int index = 0;
+        for (double t = geo.wheel_t_min(); t <= geo.wheel_t_max(); t += s.strip, ++index) {
+          const contact::ContactPoint p = geo.point_at(side, t, pos.y, c.z[std::size_t(i)], c.roll, pos.yaw);
+          if (!(std::isfinite(p.gap) && p.gap < kStripGap)) continue;
+          if (set.n == contact::StripSet::kMax)
+            throw InputError("wheelset contact: more than " + std::to_string(contact::StripSet::kMax) +
+                             " strips near the contact at y = " + num(pos.y) + " m: use a wider strip (option strip)");
+          contact::StripPoint q;
+          q.index = index;
+          q.gap = std::max(0.0, p.gap);
+          q.angle = sg * p.angle;
+          q.lateral = sg * (p.y - pos.y);
+          q.lead = p.x * std::cos(pos.yaw) + (p.y - pos.y) * std::sin(pos.yaw);  // wheelset frame
+          q.height = p.height;
+          q.A = p.A;
+          q.f = contact::StripContactTable::winkler_factor(p.B / p.A);
+          q.y_wheel = p.y_wheel;
+          set.add(q);
         }
-        W.Fx = -X;  // the wheel on the rail
-        W.Fy = -Y;
-        W.Fz = -Z;
-      };
-      // The prescribed Fz is the wheel's total vertical force, creep forces
-      // included (as in CONTACT's wheelset problems): in flange contact the
-      // lateral creep force carries a large part of it (mu tan(delta) of the
-      // normal part at 66 deg), so the normal part is found by the secant
-      // method on Z(Qn) - Fz, from Qn = Fz.
-      WheelsetContactWheel& W = r.wheel[i];
-      double q0 = pos.Fz;
-      wheel_forces(q0, W);
-      double g0 = -W.Fz - pos.Fz;
-      double q1 = std::max(0.05 * pos.Fz, pos.Fz - g0);
-      bool converged = std::abs(g0) <= 1e-9 * pos.Fz;
-      for (int it = 0; it < 50 && !converged; ++it) {
-        wheel_forces(q1, W);
-        const double g1 = -W.Fz - pos.Fz;
-        if (std::abs(g1) <= 1e-9 * pos.Fz) {
-          converged = true;
-          break;
+        if (set.n == 0)
+          throw InputError("wheelset contact: y = " + num(pos.y) + " m, yaw = " + num(pos.yaw) + " rad: the " +
+                           (i == 0 ? "left" : "right") + " wheel does not meet its rail");
+        // The wheelset rolling steadily (no rates).
+        WheelsetKinematics k;
+        k.V = s.speed;
+        k.Omega = Omega;
+        k.y = pos.y;
+        k.psi = pos.yaw;
+        k.phi = c.roll;
+        // The wheel's patches, creep forces and total force on the rail when the
+        // normal loads' vertical components add up to Qn.
+        auto wheel_forces = [&](double Qn, WheelsetContactWheel& W) {
+          StripLoads L;
+          W = WheelsetContactWheel{};
+          W.approach = strip_approach_for_load(set, Qn, 0.0, Es, L);
+          double X = 0, Y = 0, Z = 0;
+          for (int p = 0; p < L.n; ++p) {
+            WheelsetContactPatch P;
+            ContactPointGeometry g = L.patch[p];
+            P.N = L.N[p];
+            P.contact_angle = sg * g.contact_angle;  // track frame: the right wheel's flange < 0, as `railsim geometry`
+            P.rolling_radius = g.rolling_radius;
+            P.a = g.semi_a;
+            P.b = g.semi_b;
+            P.y_track = pos.y + sg * g.lateral;
+            P.x_track = g.lead * std::cos(pos.yaw) - sg * g.lateral * std::sin(pos.yaw);  // back to the track frame
+            // The profile positions of the patch centre: the strip nearest to its lateral position.
+            double best = 1e9;
+            for (int j = 0; j < set.n; ++j)
+              if (std::abs(set.lateral[j] - g.lateral) < best) {
+                best = std::abs(set.lateral[j] - g.lateral);
+                P.y_wheel = set.y_wheel[j];
+              }
+            P.y_rail = sg * P.y_track - geo.rail_offset();  // placed (inclined) rail profile, field side positive
+            P.creep = wheel_creepages(k, g, int(sg));
+            contact::ContactInput in;
+            if (P.a > 0 && P.b > 0) in.patch = contact::hertz_from_semi_axes(P.a, P.b, P.N, s.material);
+            in.patch.Fz = P.N;
+            in.creep = P.creep;
+            in.material = s.material;
+            in.rolling_speed = s.speed;
+            P.forces = model.solve(in, ws);
+            const double ct = std::cos(g.contact_angle), st = std::sin(g.contact_angle);
+            X += P.forces.Fx - P.forces.Fy * pos.yaw * ct;
+            Y += P.forces.Fx * pos.yaw + P.forces.Fy * ct - sg * P.N * st;
+            Z += sg * P.forces.Fy * st + P.N * ct;
+            W.patches.push_back(P);
+          }
+          W.Fx = -X;  // the wheel on the rail
+          W.Fy = -Y;
+          W.Fz = -Z;
+        };
+        // The prescribed Fz is the wheel's total vertical force, creep forces
+        // included (as in CONTACT's wheelset problems): in flange contact the
+        // lateral creep force carries a large part of it (mu tan(delta) of the
+        // normal part at 66 deg), so the normal part is found by the secant
+        // method on Z(Qn) - Fz, from Qn = Fz.
+        WheelsetContactWheel& W = r.wheel[i];
+        double q0 = pos.Fz;
+        wheel_forces(q0, W);
+        double g0 = -W.Fz - pos.Fz;
+        double q1 = std::max(0.05 * pos.Fz, pos.Fz - g0);
+        bool converged = std::abs(g0) <= 1e-9 * pos.Fz;
+        for (int it = 0; it < 50 && !converged; ++it) {
+          wheel_forces(q1, W);
+          const double g1 = -W.Fz - pos.Fz;
+          if (std::abs(g1) <= 1e-9 * pos.Fz) {
+            converged = true;
+            break;
+          }
+          double q2 = (g1 != g0) ? q1 - g1 * (q1 - q0) / (g1 - g0) : q1 - g1;
+          q2 = std::clamp(q2, 0.5 * q1, 2.0 * q1);  // keep the normal part positive and the step bounded
+          q0 = q1;
+          g0 = g1;
+          q1 = q2;
         }
-        double q2 = (g1 != g0) ? q1 - g1 * (q1 - q0) / (g1 - g0) : q1 - g1;
-        q2 = std::clamp(q2, 0.5 * q1, 2.0 * q1);  // keep the normal part positive and the step bounded
-        q0 = q1;
-        g0 = g1;
-        q1 = q2;
+        if (!converged)
+          throw NumericalError("wheelset contact: y = " + num(pos.y) + " m, yaw = " + num(pos.yaw) + " rad: the " +
+                               (i == 0 ? "left" : "right") + " wheel's vertical force " + num(pos.Fz) +
+                               " N is not reached (the creep forces carry it off, mu tan(delta) near 1?)");
       }
-      if (!converged)
-        throw NumericalError("wheelset contact: y = " + num(pos.y) + " m, yaw = " + num(pos.yaw) + " rad: the " +
-                             (i == 0 ? "left" : "right") + " wheel's vertical force " + num(pos.Fz) +
-                             " N is not reached (the creep forces carry it off, mu tan(delta) near 1?)");
+    };
+    const double nominal = pos.has_omega ? pos.omega : s.speed / s.track.r0;
+    if (!pos.free_rolling) {
+      solve_wheels(nominal);
+      return r;
     }
+    // A free axle: no torque about it from the creep forces, sum Fx r = 0 over
+    // every patch of both wheels (the vehicle models' free axle rotation,
+    // engine/model.hpp). The torque rises with Omega (xi falls); within
+    // +-10 % of V / r0 every patch slides fully one way or the other.
+    auto torque = [&](double Omega) {
+      solve_wheels(Omega);
+      double t = 0.0;
+      for (const auto& w : r.wheel)
+        for (const auto& P : w.patches) t += P.forces.Fx * P.rolling_radius;
+      return t;
+    };
+    const double lo = 0.9 * nominal, hi = 1.1 * nominal;
+    const double tlo = torque(lo), thi = torque(hi);
+    if (!(tlo < 0.0 && thi > 0.0))
+      throw NumericalError("wheelset contact: y = " + num(pos.y) + " m, yaw = " + num(pos.yaw) +
+                           " rad: no free-rolling speed within +-10 % of V / r0 (axle torque of the creep forces " +
+                           num(tlo) + " .. " + num(thi) + " N m)");
+    std::uintmax_t iters = 60;
+    const auto root = boost::math::tools::toms748_solve(torque, lo, hi, tlo, thi,
+                                                        boost::math::tools::eps_tolerance<double>(40), iters);
+    solve_wheels(0.5 * (root.first + root.second));
     return r;
   }
 }

@@ -17,7 +17,9 @@
 //     and equivalent ellipses;
 //  3. per patch the steady-state creepages of the wheelset rolling at omega
 //     with speed V (engine/wheel_rail/creepages.hpp: no rates), and the tangential model
-//     chosen by name (contact/registry.hpp) on the patch;
+//     chosen by name (contact/registry.hpp) on the patch; omega is given, or
+//     V / r0, or (free_rolling) the speed at which the creep forces put no
+//     torque on the axle;
 //  4. the forces of the wheel on the rail, summed over the patches, in
 //     railsim's track frame (x forward, y left, z up).
 // Conventions of CONTACT's track frame (x forward, y to the right, z down:
@@ -43,6 +45,9 @@ struct WheelsetContactSetup {
   double strip = 0.25e-3;                       // strip width (arc length) [m]
   std::string model = "chopaya";                // tangential model
   contact::TangentialModelOptions model_options;
+  // Where the set-up was given (the case file), prefixed to the messages of a
+  // profile or track set-up that cannot be used; empty: none.
+  std::string where;
 };
 
 struct WheelsetContactPosition {
@@ -52,6 +57,12 @@ struct WheelsetContactPosition {
   bool has_roll = false;
   double omega = 0.0;            // [rad/s], used when has_omega (else V / r0)
   bool has_omega = false;
+  // A free axle (`omega: free`): Omega such that the creep forces put no
+  // torque on the axle, sum over the patches of Fx r = 0 (the vehicle models'
+  // free axle rotation). Without it and without omega the axle is driven at
+  // V / r0, which carries whatever torque the rolling radii ask for (60 kN
+  // per wheel, S1002/UIC60 1:40, shifted 5 mm: a net 12 kN traction).
+  bool free_rolling = false;
   // Where the position was given ("FILE:LINE: key 'positions[i]'"), for the
   // messages of a position that cannot be solved; empty: "position i".
   std::string where;
@@ -77,11 +88,14 @@ struct WheelsetContactWheel {
 
 struct WheelsetContactResult {
   WheelsetContactPosition position;
-  double roll = 0.0;  // roll used [rad]
+  double roll = 0.0;   // roll used [rad]
+  double omega = 0.0;  // rolling speed used [rad/s] (given, V / r0, or the free axle's)
   WheelsetContactWheel wheel[2];  // left, right
 };
 
-// Throws InputError for bad set-ups or positions out of the profiles' range.
+// Throws InputError for bad set-ups (naming `where`, the key and, when the
+// centred wheelset cannot sit on the rails, the profiles and track set-up) or
+// positions out of the profiles' range (naming the position's `where`).
 std::vector<WheelsetContactResult> wheelset_contact(const WheelsetContactSetup& setup,
                                                     const std::vector<WheelsetContactPosition>& positions);
 

@@ -96,6 +96,51 @@ void read_run_status(const std::string& file, const Scenario& sc, YqRun& run, do
 
 }  // namespace
 
+namespace {
+
+// Default labels: each folder's name, with as many parent folders as it takes
+// to tell the runs apart (a/out and b/out: "a/out", "b/out"; "out" alone
+// when the names differ). The same folder given twice is refused.
+std::vector<std::string> folder_labels(const std::vector<std::string>& dirs) {
+  namespace fs = std::filesystem;
+  const std::size_t n = dirs.size();
+  std::vector<std::vector<fs::path>> parts(n);  // components, last first
+  for (std::size_t i = 0; i < n; ++i) {
+    fs::path p = fs::path(dirs[i]).lexically_normal();
+    if (p.filename().empty()) p = p.parent_path();  // "a/out/" -> "a/out"
+    for (const fs::path& c : p) parts[i].insert(parts[i].begin(), c);
+    if (parts[i].empty()) parts[i].push_back(dirs[i]);
+  }
+  std::vector<std::size_t> depth(n, 1);
+  auto label = [&](std::size_t i) {
+    fs::path l;
+    for (std::size_t k = depth[i]; k-- > 0;) l /= parts[i][k];
+    return l.generic_string();
+  };
+  std::vector<std::string> out(n);
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (std::size_t i = 0; i < n; ++i) out[i] = label(i);
+    // Every run whose label another shares takes one parent more.
+    std::vector<std::size_t> grow;
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t k = 0; k < n; ++k)
+        if (k != i && out[k] == out[i]) {
+          if (depth[i] == parts[i].size() && depth[k] == parts[k].size())
+            throw InputError("compare-yq: run folders " + std::to_string(std::min(i, k) + 1) + " and " +
+                             std::to_string(std::max(i, k) + 1) + " (" + dirs[std::min(i, k)] + ", " +
+                             dirs[std::max(i, k)] + ") are the same folder: compare different runs");
+          grow.push_back(i);
+          break;
+        }
+    for (std::size_t i : grow)
+      if (depth[i] < parts[i].size()) ++depth[i], changed = true;
+  }
+  return out;
+}
+
+}  // namespace
+
 YqComparison compare_yq(const Scenario& sc, const std::vector<std::string>& dirs, const std::vector<std::string>& labels,
                         const std::string& wheelset) {
   if (dirs.empty()) throw InputError("compare-yq: no run folders given");
@@ -133,11 +178,11 @@ YqComparison compare_yq(const Scenario& sc, const std::vector<std::string>& dirs
   c.flange_angle = fa.angle;
   c.mu = sc.model.coupling.options().material.mu;
   c.nadal = nadal_limit(c.flange_angle, c.mu);
+  const std::vector<std::string> names = labels.empty() ? folder_labels(dirs) : labels;
   for (std::size_t r = 0; r < dirs.size(); ++r) {
     YqRun run;
     run.dir = dirs[r];
-    run.label = labels.empty() ? std::filesystem::path(dirs[r]).lexically_normal().filename().string() : labels[r];
-    if (run.label.empty()) run.label = dirs[r];
+    run.label = names[r];
     const std::string file = dirs[r] + "/channels.csv";
     if (!std::filesystem::exists(file))
       throw InputError(file + ": not found (give folders written by `railsim run SCENARIO --out DIR`)");

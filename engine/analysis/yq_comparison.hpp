@@ -54,7 +54,9 @@ struct YqComparison {
   std::vector<YqRun> runs;
 };
 
-// Read the runs in `dirs` (labels: same count, or empty = folder names).
+// Read the runs in `dirs` (labels: same count, or empty = folder names, with
+// their parent folders where names repeat: a/out and b/out are "a/out" and
+// "b/out"; the same folder twice is an InputError).
 // Throws InputError naming the file when channels.csv is missing or lacks the
 // wheelset's columns, when a value of time, distance or Y/Q is not a finite
 // number (naming the row and column), when the counts differ, or when the

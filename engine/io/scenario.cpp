@@ -470,6 +470,10 @@ Scenario load_scenario(const InputNode& root, const std::string& base) {
   Model& m = sc.model;
   load_vehicle(root.at("vehicle").as_existing_file(base), m);
   const auto track = read_track(root, base);
+  for (const std::string& w : track->warnings()) {  // e.g. a measured record reaching far beyond the track
+    sc.warnings.push_back(w);
+    spdlog::warn("{}", w);
+  }
   m.track = std::make_shared<TrackInput>(track);
   read_motion(root, track->length(), sc);
   read_wheelset_model(root, m);

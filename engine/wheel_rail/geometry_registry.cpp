@@ -163,6 +163,14 @@ contact::TrackSetup read_track_setup(const InputNode& g, const std::string& radi
   if (g.has("flange_back")) t.flange_back = g.in_range("flange_back", 0.8, 1.8);
   if (g.has("back_face")) t.back_face = g.in_range("back_face", -0.2, 0.0);
   if (g.has(radius_key)) t.r0 = g.in_range(radius_key, 0.1, 1.5);
+  // The flange backs lie inside the running edges (1.360 m within 1.435 m).
+  if (!(t.flange_back < t.gauge)) {
+    const InputNode& n = g.has("flange_back") ? g.at("flange_back") : g.at("gauge");
+    n.fail("flange_back " + config::format_number(t.flange_back) + " m" +
+           (g.has("flange_back") ? "" : " (the default)") + " is not smaller than gauge " +
+           config::format_number(t.gauge) + " m" + (g.has("gauge") ? "" : " (the default)") +
+           ": the flange backs lie inside the rails' running edges (1.360 m within 1.435 m for standard gauge)");
+  }
   return t;
 }
 

@@ -155,6 +155,39 @@ TEST_CASE("malformed track files name the segment and the key", "[tracks][track_
                  Catch::Contains("rows must be at least 1 mm apart"));
 }
 
+// A record that reaches far beyond the track's end was accepted without a
+// word (the part beyond is never used); one whose distances are millimetres
+// put its rows 250 m apart and ran as a smooth 10 km wave.
+TEST_CASE("a measured record reaching beyond the track is said, one in mm refused", "[tracks][track_file]") {
+  // 0 .. 400 m every 5 m on the 270 m track: 130 m beyond the end, 27 of 81 rows unused.
+  const Track t = load_text(std::string(kCurve) + "irregularities:\n  - {type: measured, file: measured_long.csv}\n");
+  REQUIRE(t.warnings().size() == 1);
+  CHECK_THAT(t.warnings()[0], Catch::Contains("t.yaml:8: irregularities[0] (measured): key 'file':") &&
+                                  Catch::Contains("measured_long.csv covers s = 0 .. 400 m, the track 0 .. 270 m") &&
+                                  Catch::Contains("130 m beyond its end are not used (55 of 81 rows lie on the "
+                                                  "track)"));
+  // The record still applies on the track.
+  CHECK(t.at(10.0).irregularity[Channel::lateral] == Approx(2.0e-3).epsilon(1e-12));
+  // Placed 20 m early: both ends said.
+  const Track early = load_text(std::string(kCurve) +
+                                "irregularities:\n  - {type: measured, file: measured_long.csv, offset: -20}\n");
+  REQUIRE(early.warnings().size() == 1);
+  CHECK_THAT(early.warnings()[0], Catch::Contains("(offset -20 m)") &&
+                                      Catch::Contains("110 m beyond its end and 20 m before its start are not used"));
+  // A record within the track, or past it by less than 10 % of its length: nothing to say.
+  CHECK(load_text(std::string(kCurve) + "irregularities:\n  - {type: measured, file: measured_good.csv, offset: 268}\n")
+            .warnings()
+            .empty());
+  CHECK(load_text(std::string(kCurve) + "irregularities:\n  - {type: measured, file: measured_good.csv}\n")
+            .warnings()
+            .empty());
+  // s in mm: 0 .. 10000 "m" with rows 250 m apart on a 270 m track.
+  CHECK_THAT(error_of(std::string(kCurve) + "irregularities:\n  - {type: measured, file: measured_s_in_mm.csv}\n"),
+             Catch::Contains("t.yaml:8: irregularities[0] (measured): key 'file':") &&
+                 Catch::Contains("measured_s_in_mm.csv covers s = 0 .. 10000 m, the track 0 .. 270 m") &&
+                 Catch::Contains("rows 250 m apart") && Catch::Contains("is column 's' in mm?"));
+}
+
 TEST_CASE("a measured irregularity and a twist load from YAML", "[tracks][track_file]") {
   const Track t = load_text(std::string(kCurve) + R"(irregularities:
   - {type: measured, file: measured_good.csv, offset: 10, units: mm}
@@ -181,6 +214,15 @@ TEST_CASE("railsim track samples a file and bad files exit with code 2 naming th
   // 11.8 V^2 / R - E at 60 km/h on R 250 with 100 mm: 69.9 mm excess.
   CHECK(csv.number(140, "cant_deficiency_mm") == Approx(1.5 * std::pow(60 / 3.6, 2) / (9.81 * 250) * 1e3 - 100).epsilon(1e-6));
   CHECK(csv.number(226, "cross_level_mm") == Approx(-18.0).epsilon(1e-9));  // s = 153 m
+
+  // A record reaching far beyond the track: the program says so and runs.
+  const std::string long_record = dir + "/long_record.yaml";
+  std::ofstream(long_record) << kCurve << "irregularities:\n  - {type: measured, file: '"
+                             << railsim::test::data_path("tracks/measured_long.csv") << "'}\n";
+  const auto warned = railsim::test::run_railsim("track '" + long_record + "' --out '" + dir + "/long.csv'");
+  CHECK(warned.exit_code == 0);
+  CHECK_THAT(warned.output, Catch::Contains("long_record.yaml:8: irregularities[0] (measured)") &&
+                                Catch::Contains("130 m beyond its end are not used"));
 
   const std::string bad = dir + "/bad.yaml";
   std::ofstream(bad) << "segments:\n  - {type: straight, length: 50}\n  - {type: clothoid, length: -3}\n";

@@ -183,7 +183,17 @@ TEST_CASE("wheelset-contact: the mirrored pose gives the mirrored forces, with a
         for (int w = 0; w < 2; ++w) {
           const auto& A = a[0].wheel[w];
           const auto& B = b[0].wheel[1 - w];
-          CHECK(A.patches.size() == B.patches.size());
+          REQUIRE(A.patches.size() == B.patches.size());
+          // Contact angles in the track frame (as `railsim geometry`): the
+          // mirrored wheel's angle is the negative; a flange (y = 8 mm pushes
+          // the left wheel's flange against its rail) is > 0 on the left
+          // wheel and < 0 on the right (it was > 0 on both).
+          for (std::size_t k = 0; k < A.patches.size(); ++k)
+            CHECK(A.patches[k].contact_angle == Approx(-B.patches[k].contact_angle).margin(1e-9));
+          if (y == 0.008 && w == 0) {
+            CHECK(A.patches[0].contact_angle > 0.5);
+            CHECK(B.patches[0].contact_angle < -0.5);
+          }
           const double tol = 1e-6 * p.Fz;
           CHECK(A.Fx == Approx(B.Fx).margin(tol));
           CHECK(A.Fy == Approx(-B.Fy).margin(tol));
@@ -209,11 +219,22 @@ TEST_CASE("wheelset-contact: bad cases exit 2 naming the key", "[engine][analysi
     std::string text, expect;
   };
   for (const Case& c : {Case{head + "positions:\n  - {y: 0.001, Fz: -1}\n", "Fz"},
+                        // 1e-6 N: a 37 nm patch, MIM 39 s and 730 MB for one position.
+                        Case{head + "positions:\n  - {y: 0.001, Fz: 1e-6}\n",
+                             "key 'positions[0].Fz': expected a number in [1, 1000000]"},
                         Case{head + "positions:\n  - {y: 0.001, Fz: 1e4, pitch: 1}\n", "pitch"},
                         Case{head + "positions:\n  - {y: 0.5, Fz: 1e4}\n", "positions[0].y"},
                         Case{head + "positions:\n  - {y: .nan, Fz: 1e4}\n", "positions[0].y"},
                         Case{head + "positions:\n  - {y: 0.001, yaw: 0.5, Fz: 1e4}\n", "yaw"},
                         Case{head + "positions: []\n", "positions"},
+                        // The set-up, not a position: named with the case file (gauge 1.3 m against the
+                        // default flange back 1.360 m named no file; flange_back 1.2 m blamed position 0).
+                        Case{head + "gauge: 1.3\npositions:\n  - {y: 0.001, Fz: 1e4}\n", "key 'gauge'"},
+                        Case{head + "flange_back: 1.2\npositions:\n  - {y: 0.001, Fz: 1e4}\n",
+                             "flange_back 1.2 m, back_face -0.07 m, inclination 0.0249948 rad: the centred wheelset "
+                             "cannot sit on the rails"},
+                        Case{"wheel: UIC60\nrail: UIC60\npositions:\n  - {y: 0.001, Fz: 1e4}\n",
+                             "key 'wheel': UIC60: UIC60 is a rail profile"},
                         // A profile path is the case file's folder's, never the working folder's.
                         Case{"wheel: no_such_wheel.csv\nrail: UIC60\npositions:\n  - {y: 0.001, Fz: 1e4}\n",
                              "key 'wheel': no profile file"}}) {
@@ -296,4 +317,78 @@ TEST_CASE("wheelset-contact: --extrapolation none gives MIM's own grid forces, c
                                      "/f.csv");
   CHECK(bad.exit_code == 2);
   CHECK(bad.output.find("--extrapolation") != std::string::npos);
+}
+
+TEST_CASE("wheelset-contact: omega free finds the free axle's speed; V / r0 drives the axle",
+          "[engine][analysis][contact]") {
+  // S1002 on UIC60 1:40, 60 kN per wheel, 20 m/s, CHOPAYA. Without omega the
+  // axle turns at V / r0 and carries a torque: shifted 5 mm, a net 12 kN of
+  // traction on the rails (28 kN in flange contact at 6.5 mm). A free axle
+  // (omega: free) has no torque from the creep forces: sum Fx r = 0.
+  engine::WheelsetContactSetup s;
+  s.track.inclination = std::atan(1.0 / 40.0);
+  s.speed = 20.0;
+  const double muFz = 0.3 * 6.0e4;
+  for (const double y : {0.0, 0.003, 0.005, 0.0065, -0.005}) {
+    engine::WheelsetContactPosition p;
+    p.y = y;
+    p.yaw = y > 0.006 ? 0.004 : 0.0;
+    p.Fz = 6.0e4;
+    engine::WheelsetContactPosition f = p;
+    f.free_rolling = true;
+    const auto driven = engine::wheelset_contact(s, {p})[0];
+    const auto free = engine::wheelset_contact(s, {f})[0];
+    INFO("y " << y << ": Omega " << free.omega << " against V / r0 " << driven.omega);
+    CHECK(driven.omega == Approx(20.0 / 0.46));
+    double torque = 0.0, rmin = 1.0, rmax = 0.0;
+    for (const auto& w : free.wheel)
+      for (const auto& P : w.patches) {
+        torque += P.forces.Fx * P.rolling_radius;
+        rmin = std::min(rmin, P.rolling_radius);
+        rmax = std::max(rmax, P.rolling_radius);
+      }
+    CHECK(std::abs(torque) < 1e-6 * muFz * 0.46);
+    // The free axle rolls between the speeds of its two wheels' radii.
+    CHECK(free.omega >= 20.0 / rmax * (1 - 1e-9));
+    CHECK(free.omega <= 20.0 / rmin * (1 + 1e-9));
+    const double net_free = free.wheel[0].Fx + free.wheel[1].Fx;
+    const double net_driven = driven.wheel[0].Fx + driven.wheel[1].Fx;
+    if (y == 0.0) {
+      CHECK(std::abs(free.wheel[0].Fx) < 1e-3 * muFz);  // centred: no longitudinal creep force
+      CHECK(std::abs(driven.wheel[0].Fx) > 0.05 * muFz);  // at V / r0 with r 0.05 mm above r0: 1.6 kN
+    } else {
+      // The steering pair of a free axle: the wheel on the larger radius (the
+      // side it is shifted to) pushes its rail back, the other forward, about
+      // equally; the driven axle adds a net traction.
+      const int big = y > 0 ? 0 : 1;
+      CHECK(free.wheel[big].Fx < 0.0);
+      CHECK(free.wheel[1 - big].Fx > 0.0);
+      CHECK(std::abs(net_free) < 0.05 * muFz);
+      if (std::abs(y) >= 0.005) CHECK(net_driven < -0.5 * muFz);
+    }
+  }
+  // Mirrored poses: the same free speed.
+  engine::WheelsetContactPosition a, b;
+  a.y = 0.004, a.yaw = 0.003, a.Fz = 6.0e4, a.free_rolling = true;
+  b = a;
+  b.y = -a.y, b.yaw = -a.yaw;
+  CHECK(engine::wheelset_contact(s, {a})[0].omega == Approx(engine::wheelset_contact(s, {b})[0].omega).epsilon(1e-9));
+  // Through the program: `omega: free`, the speed used in column omega; a word other than free names the key.
+  const std::string dir = test::temp_dir("wheelset_contact_free");
+  const std::string head = "wheel: S1002\nrail: UIC60\nmaterial: {G: 8.2e10, nu: 0.28, mu: 0.3}\nspeed: 20\n";
+  std::ofstream(dir + "/free.yaml") << head << "positions:\n  - {y: 0.005, Fz: 6e4, omega: free}\n"
+                                    << "  - {y: 0.005, Fz: 6e4}\n";
+  const auto r = test::run_railsim("wheelset-contact " + dir + "/free.yaml --out " + dir + "/free.csv");
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  const auto t = results::read_csv(dir + "/free.csv");
+  REQUIRE(t.rows.size() == 2);
+  CHECK(t.number(1, "omega") == Approx(20.0 / 0.46));
+  CHECK(t.number(0, "omega") < 0.999 * 20.0 / 0.46);  // the larger radius of the shifted wheel slows it
+  CHECK(std::abs(t.number(0, "left_Fx") + t.number(0, "right_Fx")) < 0.05 * muFz);
+  std::ofstream(dir + "/bad.yaml") << head << "positions:\n  - {y: 0.005, Fz: 6e4, omega: loose}\n";
+  const auto bad = test::run_railsim("wheelset-contact " + dir + "/bad.yaml --out " + dir + "/bad.csv");
+  CHECK(bad.exit_code == 2);
+  CHECK_THAT(bad.output,
+             Catch::Contains("bad.yaml:6: key 'positions[0].omega': expected a rolling speed [rad/s] or free"));
 }

@@ -70,6 +70,24 @@ TEST_CASE("Y/Q comparison: peaks, places and how long Nadal's limit is exceeded"
   CHECK(s.find("\"label\": \"k = 0.5\"") != std::string::npos);
   // Default labels: the folder names. Bad input names the file or option.
   CHECK(compare_yq(sc, {dir + "/b"}, {}).runs[0].label == "b");
+  // Folders of the same name (k1/out, k05/out) were both labelled "out":
+  // rows, legend and summary could not be told apart. Their parents tell them apart.
+  write_run(dir + "/k1/out", 2.0);
+  write_run(dir + "/k05/out", 1.0);
+  write_run(dir + "/deep/k1/out", 1.5);
+  const YqComparison same = compare_yq(sc, {dir + "/k1/out", dir + "/k05/out/", dir + "/a"}, {});
+  CHECK(same.runs[0].label == "k1/out");
+  CHECK(same.runs[1].label == "k05/out");
+  CHECK(same.runs[2].label == "a");  // a name nobody else has stays short
+  const YqComparison deep = compare_yq(sc, {dir + "/k1/out", dir + "/deep/k1/out", dir + "/k05/out"}, {});
+  CHECK(deep.runs[0].label == std::filesystem::path(dir).filename().string() + "/k1/out");
+  CHECK(deep.runs[1].label == "deep/k1/out");
+  CHECK(deep.runs[2].label == "k05/out");
+  const auto legend = yq_comparison_chart(same);
+  CHECK(legend.series[0].label.find("k1/out, left wheel") == 0);
+  // The same folder twice is not a comparison.
+  CHECK_THROWS_WITH(compare_yq(sc, {dir + "/a", dir + "/./a/"}, {}),
+                    Catch::Contains("run folders 1 and 2") && Catch::Contains("are the same folder"));
   CHECK_THROWS_WITH(compare_yq(sc, {dir + "/missing"}, {}), Catch::Contains("missing/channels.csv"));
   CHECK_THROWS_WITH(compare_yq(sc, {dir + "/a"}, {"x", "y"}), Catch::Contains("--labels"));
   CHECK_THROWS_WITH(compare_yq(sc, {dir + "/a"}, {}, "ws9"), Catch::Contains("--wheelset") && Catch::Contains("ws1"));
