@@ -33,7 +33,8 @@ struct ContactOptions {
 };
 
 int run_contact(const ContactOptions& o) {
-  const char* spin = tangential_model_option("--model", o.model).spin;
+  const contact::TangentialModelEntry& entry = tangential_model_option("--model", o.model);
+  const char* spin = entry.spin;
   // Inputs first: a cached-table model may take a while to build on first use.
   check_out_is_not_input(o.out, o.cases);
   ContactCaseSet set = load_contact_cases(o.cases);
@@ -43,6 +44,7 @@ int run_contact(const ContactOptions& o) {
   mo.tolerance = o.tolerance;
   if (!o.extrapolation.empty()) mo.extrapolation = contact::grid_extrapolation_from_name(o.extrapolation, "--extrapolation");
   mo.cache_dir = o.cache_dir;
+  check_model_reads_options(entry, mo);
   const auto model = contact::make_tangential_model(o.model, mo);
   const auto ws = model->make_workspace();
   // 17 significant digits: the file holds the doubles exactly (round trip).

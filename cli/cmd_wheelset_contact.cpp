@@ -94,6 +94,7 @@ int run_wheelset_contact(const WheelsetContactArgs& a) {
   s.model_options.tolerance = a.tolerance;
   if (!a.extrapolation.empty())
     s.model_options.extrapolation = contact::grid_extrapolation_from_name(a.extrapolation, "--extrapolation");
+  check_model_reads_options(tangential_model_option("--model", a.model), s.model_options);
   std::vector<engine::WheelsetContactPosition> pos;
   for (const auto& n : root.at("positions").elements()) {
     n.allow_only({"y", "yaw", "Fz", "roll", "omega"});

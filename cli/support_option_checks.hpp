@@ -35,6 +35,11 @@ const CLI::Validator& non_empty_value();
 // InputError "OPTION: unknown contact model 'x' (known models: ...)".
 const contact::TangentialModelEntry& tangential_model_option(const std::string& option, const std::string& name);
 
+// InputError "--grid: model 'chopaya' does not use it (models that do: ...)"
+// for each option given to a one-model command that the model does not read
+// (contact::unused_model_options), instead of ignoring it silently.
+void check_model_reads_options(const contact::TangentialModelEntry& model, const contact::TangentialModelOptions& o);
+
 // InputError "--out: FILE is the input file itself (...)" when the result
 // file `out` and the input file `input` are the same file (it would be
 // overwritten before or while it is read).

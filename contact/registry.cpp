@@ -26,7 +26,7 @@ std::unique_ptr<TangentialModel> make_coefficients(const TangentialModelOptions&
 
 const std::vector<TangentialModelEntry>& tangential_models() {
   static const std::vector<TangentialModelEntry> table = {
-      // {"name", "one-line description", &factory, tabulated, "spin"},
+      // {"name", "one-line description", &factory, tabulated, "spin", geometry_coefficients, options read},
       {"linear", "Kalker's linear theory (no saturation; valid for small creepage)", &make_linear_theory, false,
        "linear C23 term only, no saturation: valid while |F| < 0.3 mu Fz (flagged beyond)"},
       {"linear_sat", "Kalker's linear theory with Coulomb cut-off at mu Fz", &make_linear_sat, false,
@@ -48,26 +48,30 @@ const std::vector<TangentialModelEntry>& tangential_models() {
       {"fastsim", "FASTSIM as CONTACT distributes it: Kalker's flexibilities blended towards one at large "
                   "creepage (Vollebregt & Voltr 2023), elliptic bound, grid N x N (default 20)", &make_fastsim, false,
        "Winkler spin flexibility L3: peak and fall reproduced, 9 % of mu Fz low at the peak on long patches "
-       "(a/b 5); lateral creepage against spin on wide/long patches up to 21 %"},
+       "(a/b 5); lateral creepage against spin on wide/long patches up to 21 %", false, kOptionGrid},
       {"fastsim_kalker", "FASTSIM with Kalker's three flexibilities L1, L2, L3 (no blending), elliptic bound, "
                          "grid N x N (default 20)", &make_fastsim_kalker, false,
-       "as fastsim; with creepage + spin the saturated traction is skewed by L1 != L2 != L3: up to 24 % of mu Fz"},
+       "as fastsim; with creepage + spin the saturated traction is skewed by L1 != L2 != L3: up to 24 % of mu Fz",
+       false, kOptionGrid},
       {"fastsim_parabolic", "Kalker's original FASTSIM (1982): three flexibilities, parabolic bound, grid N x N "
                             "(default 20)", &make_fastsim_parabolic, false,
-       "as fastsim_kalker with the parabolic bound: up to 22 % of mu Fz"},
+       "as fastsim_kalker with the parabolic bound: up to 22 % of mu Fz", false, kOptionGrid},
       {"fastrip", "FaStrip-type: strip theory per strip + FASTSIM-like spin, grid N x N (default 20)", &make_fastrip,
        false,
        "strip theory for creepage, Winkler spin, sliding strips follow the rigid slip: every sign combination "
-       "within 10.4 % of mu Fz (pure spin: 9 % low at the peak, a/b 5)"},
+       "within 10.4 % of mu Fz (pure spin: 9 % low at the peak, a/b 5)", false, kOptionGrid},
       {"mim", "exact boundary-element steady rolling (Kalker's MIM, FFT), grid N across minor axis (default 40)",
        &make_mim, false, "exact (the reference); spin discretised as CONTACT's, forces Richardson-extrapolated from grid N and N/2 "
-       "(grid 60 within 0.23 % of mu Fz of grid 120; without extrapolation 0.49 %)"},
+       "(grid 60 within 0.23 % of mu Fz of grid 120; without extrapolation 0.49 %)", false,
+       kOptionGrid | kOptionTolerance | kOptionExtrapolation},
       {"mim_table", "exact MIM results tabulated over a/b and normalised creepages/spin (USETAB-like), cubic "
                     "interpolation; the table is built once (56,277 solves) and cached",
-       &make_mim_table, true, "exact values interpolated over (xi', eta' + psi'/3, psi'): within 0.6 % of mu Fz"},
+       &make_mim_table, true, "exact values interpolated over (xi', eta' + psi'/3, psi'): within 0.6 % of mu Fz",
+       false, kOptionGrid | kOptionTolerance | kOptionCacheDir},
       {"coefficients", "Kalker's linear theory on the contact geometry's creep coefficients (RSGEO table C_ij or "
                        "prescribed f_ij), saturated by the law `saturation` (none | she)", &make_coefficients, false,
-       "as linear (saturation none) or she (saturation she) with the geometry's C23; flagged alike", true},
+       "as linear (saturation none) or she (saturation she) with the geometry's C23; flagged alike", true,
+       kOptionSaturation},
   };
   return table;
 }
@@ -109,6 +113,33 @@ const SaturationLawEntry& find_saturation_law(std::string_view name) {
 }
 
 std::string tangential_model_names() { return names_of(tangential_models()); }
+
+std::vector<std::string> unused_model_options(const TangentialModelEntry& model, const TangentialModelOptions& o) {
+  const TangentialModelOptions d;
+  struct Given {
+    TangentialOption flag;
+    bool set;
+    const char* name;
+  };
+  const Given given[] = {
+      {kOptionGrid, o.grid != d.grid, "grid"},
+      {kOptionTolerance, o.tolerance != d.tolerance, "tolerance"},
+      {kOptionExtrapolation, o.extrapolation != d.extrapolation, "extrapolation"},
+      {kOptionCacheDir, o.cache_dir != d.cache_dir, "cache_dir"},
+      {kOptionSaturation, o.saturation != d.saturation, "saturation"},
+  };
+  std::vector<std::string> unused;
+  for (const Given& g : given)
+    if (g.set && !(model.options & g.flag)) unused.emplace_back(g.name);
+  return unused;
+}
+
+std::string models_reading(TangentialOption option) {
+  std::string s;
+  for (const auto& e : tangential_models())
+    if (e.options & option) s += (s.empty() ? "" : ", ") + std::string(e.name);
+  return s.empty() ? "none" : s;
+}
 
 GridExtrapolation grid_extrapolation_from_name(const std::string& name, const char* what) {
   if (name == "default") return GridExtrapolation::Default;

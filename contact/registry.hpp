@@ -31,6 +31,15 @@ struct TangentialModelOptions {
 
 using TangentialFactory = std::unique_ptr<TangentialModel> (*)(const TangentialModelOptions&);
 
+// The options of TangentialModelOptions a model reads (bit flags).
+enum TangentialOption : unsigned {
+  kOptionGrid = 1u,
+  kOptionTolerance = 2u,
+  kOptionExtrapolation = 4u,
+  kOptionCacheDir = 8u,
+  kOptionSaturation = 16u,
+};
+
 struct TangentialModelEntry {
   const char* name;
   const char* description;
@@ -51,6 +60,8 @@ struct TangentialModelEntry {
   // (ContactInput::coefficients; model "coefficients"). On a bare patch it is
   // the linear theory or SHE again, so comparisons of models leave it out.
   bool geometry_coefficients = false;
+  // The options it reads (TangentialOption flags); the others it ignores.
+  unsigned options = 0;
 
   // Run by commands and audits that compare every model by default: neither
   // tabulated (the table would be built) nor taking the geometry's coefficients.
@@ -67,6 +78,14 @@ const TangentialModelEntry& find_tangential_model(std::string_view name);
 // Build a model by name; unknown names throw InputError listing the known ones.
 std::unique_ptr<TangentialModel> make_tangential_model(std::string_view name,
                                                        const TangentialModelOptions& options = {});
+
+// The options set in `o` (away from their defaults) that `model` does not read,
+// by their names in TangentialModelOptions ("grid", "tolerance",
+// "extrapolation", "cache_dir", "saturation"): commands that run one model
+// refuse them rather than ignore them silently.
+std::vector<std::string> unused_model_options(const TangentialModelEntry& model, const TangentialModelOptions& o);
+// "fastsim, fastrip, mim" : the models that read an option (one flag).
+std::string models_reading(TangentialOption option);
 
 // "linear, linear_sat, ..." for help texts and error messages.
 std::string tangential_model_names();

@@ -219,6 +219,22 @@ TEST_CASE("railsim on bad options: exit 2 naming the option and the range", "[cl
                               "' --model mim --grid -5 --out '" + dir + "/g.csv'",
        {"--grid: Value -5 not in range 0 to 4000"}},
       {"-o ''", "track '" + test::source_path("tracks/curve_R300.yaml") + "' -o ''", {"expected a file or folder name"}},
+      // Model options the chosen model does not read (they were ignored silently).
+      {"--grid with chopaya", "contact '" + test::data_path("bad_input/contact_one_case.yaml") +
+                                  "' --model chopaya --grid 30 --out '" + dir + "/g.csv'",
+       {"--grid: model 'chopaya' does not use it (models that do: fastsim, fastsim_kalker, fastsim_parabolic, "
+        "fastrip, mim, mim_table)"}},
+      {"--cache-dir with mim", "contact '" + test::data_path("bad_input/contact_one_case.yaml") +
+                                   "' --model mim --cache-dir '" + dir + "' --out '" + dir + "/g.csv'",
+       {"--cache-dir: model 'mim' does not use it (models that do: mim_table)"}},
+      {"--tolerance with fastsim in wheelset-contact",
+       "wheelset-contact '" + test::data_path("contact_geometry/mbench_a22.yaml") +
+           "' --model fastsim --tolerance 1e-6 --out '" + dir + "/w.csv'",
+       {"--tolerance: model 'fastsim' does not use it (models that do: mim, mim_table)"}},
+      {"--extrapolation with fastrip in wheelset-contact",
+       "wheelset-contact '" + test::data_path("contact_geometry/mbench_a22.yaml") +
+           "' --model fastrip --extrapolation none --out '" + dir + "/w.csv'",
+       {"--extrapolation: model 'fastrip' does not use it (models that do: mim)"}},
       {"--v-step 1e-9 modes", "modes " + sc + " --v-step 1e-9 --out '" + dir + "/m'",
        {"--v-step 1e-09: 20..400 km/h would take 380000000001 speeds, more than the limit of 2000"}},
       {"--v-min -10 modes", "modes " + sc + " --v-min -10 --out '" + dir + "/m'",
