@@ -1,6 +1,7 @@
 // Options checks shared by all subcommands; see support_option_checks.hpp.
 #include "cli/support_option_checks.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -129,21 +130,12 @@ const contact::TangentialModelEntry& tangential_model_option(const std::string& 
 }
 
 void check_model_reads_options(const contact::TangentialModelEntry& model, const contact::TangentialModelOptions& o) {
-  struct Flag {
-    const char* field;
-    const char* option;
-    contact::TangentialOption bit;
-  };
-  static const Flag flags[] = {{"grid", "--grid", contact::kOptionGrid},
-                               {"tolerance", "--tolerance", contact::kOptionTolerance},
-                               {"extrapolation", "--extrapolation", contact::kOptionExtrapolation},
-                               {"cache_dir", "--cache-dir", contact::kOptionCacheDir},
-                               {"saturation", "--saturation", contact::kOptionSaturation}};
-  for (const std::string& field : contact::unused_model_options(model, o))
-    for (const Flag& f : flags)
-      if (field == f.field)
-        throw InputError(std::string(f.option) + ": model '" + model.name + "' does not use it (models that do: " +
-                         contact::models_reading(f.bit) + ")");
+  for (const contact::TangentialOption flag : contact::unused_model_options(model, o)) {
+    std::string option = std::string("--") + contact::option_field_name(flag);
+    std::replace(option.begin(), option.end(), '_', '-');
+    throw InputError(option + ": model '" + model.name + "' does not use it (models that do: " +
+                     contact::models_reading(flag) + ")");
+  }
 }
 
 void check_out_is_not_input(const std::string& out, const std::string& input) {

@@ -114,24 +114,30 @@ const SaturationLawEntry& find_saturation_law(std::string_view name) {
 
 std::string tangential_model_names() { return names_of(tangential_models()); }
 
-std::vector<std::string> unused_model_options(const TangentialModelEntry& model, const TangentialModelOptions& o) {
+std::vector<TangentialOption> unused_model_options(const TangentialModelEntry& model, const TangentialModelOptions& o) {
   const TangentialModelOptions d;
-  struct Given {
-    TangentialOption flag;
-    bool set;
-    const char* name;
+  const std::pair<TangentialOption, bool> given[] = {
+      {kOptionGrid, o.grid != d.grid},
+      {kOptionTolerance, o.tolerance != d.tolerance},
+      {kOptionExtrapolation, o.extrapolation != d.extrapolation},
+      {kOptionCacheDir, o.cache_dir != d.cache_dir},
+      {kOptionSaturation, o.saturation != d.saturation},
   };
-  const Given given[] = {
-      {kOptionGrid, o.grid != d.grid, "grid"},
-      {kOptionTolerance, o.tolerance != d.tolerance, "tolerance"},
-      {kOptionExtrapolation, o.extrapolation != d.extrapolation, "extrapolation"},
-      {kOptionCacheDir, o.cache_dir != d.cache_dir, "cache_dir"},
-      {kOptionSaturation, o.saturation != d.saturation, "saturation"},
-  };
-  std::vector<std::string> unused;
-  for (const Given& g : given)
-    if (g.set && !(model.options & g.flag)) unused.emplace_back(g.name);
+  std::vector<TangentialOption> unused;
+  for (const auto& [flag, set] : given)
+    if (set && !(model.options & flag)) unused.push_back(flag);
   return unused;
+}
+
+const char* option_field_name(TangentialOption option) {
+  switch (option) {
+    case kOptionGrid: return "grid";
+    case kOptionTolerance: return "tolerance";
+    case kOptionExtrapolation: return "extrapolation";
+    case kOptionCacheDir: return "cache_dir";
+    case kOptionSaturation: return "saturation";
+  }
+  return "?";
 }
 
 std::string models_reading(TangentialOption option) {

@@ -79,11 +79,13 @@ const TangentialModelEntry& find_tangential_model(std::string_view name);
 std::unique_ptr<TangentialModel> make_tangential_model(std::string_view name,
                                                        const TangentialModelOptions& options = {});
 
-// The options set in `o` (away from their defaults) that `model` does not read,
-// by their names in TangentialModelOptions ("grid", "tolerance",
-// "extrapolation", "cache_dir", "saturation"): commands that run one model
-// refuse them rather than ignore them silently.
-std::vector<std::string> unused_model_options(const TangentialModelEntry& model, const TangentialModelOptions& o);
+// The options set in `o` (away from their defaults) that `model` does not
+// read: commands and bindings that run one model refuse them rather than
+// ignore them silently.
+std::vector<TangentialOption> unused_model_options(const TangentialModelEntry& model, const TangentialModelOptions& o);
+// The option's field name in TangentialModelOptions ("grid", "tolerance",
+// "extrapolation", "cache_dir", "saturation").
+const char* option_field_name(TangentialOption option);
 // "fastsim, fastrip, mim" : the models that read an option (one flag).
 std::string models_reading(TangentialOption option);
 

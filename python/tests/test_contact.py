@@ -135,6 +135,20 @@ def test_mim_extrapolation_choices():
         railsim.contact("mim", 1e-3, **PATCH, extrapolation="linear")
 
 
+def test_options_the_model_does_not_read_are_refused():
+    # They were ignored silently: chopaya has no grid, fastsim no tolerance, mim no table cache.
+    with pytest.raises(railsim.InputError, match="grid: model 'chopaya' does not use it .*fastsim.*mim"):
+        railsim.contact("chopaya", 1e-3, **PATCH, grid=30)
+    with pytest.raises(railsim.InputError, match="tolerance: model 'fastsim' does not use it .*mim, mim_table"):
+        railsim.contact("fastsim", 1e-3, **PATCH, tolerance=1e-6)
+    with pytest.raises(railsim.InputError, match="cache_dir: model 'mim' does not use it .*mim_table"):
+        railsim.contact("mim", 1e-3, **PATCH, cache_dir="/tmp")
+    with pytest.raises(railsim.InputError, match="extrapolation: model 'fastrip' does not use it .*: mim\\)"):
+        railsim.contact("fastrip", 1e-3, **PATCH, extrapolation="none")
+    # The options a model reads still pass.
+    assert railsim.contact("fastsim", 1e-3, **PATCH, grid=10)["Fx"] < 0
+
+
 def test_errors_are_python_exceptions_with_railsims_message():
     with pytest.raises(railsim.InputError, match="unknown.*(fastsim|known)"):
         railsim.contact("no_such_model", 1e-3, **PATCH)
