@@ -125,7 +125,8 @@ py::dict solve_arrays(const std::string& model_name, bool curvatures, const Arra
   mo.tolerance = tolerance;
   mo.extrapolation = contact::grid_extrapolation_from_name(extrapolation, "contact");
   mo.cache_dir = cache_dir;
-  for (const contact::TangentialOption flag : contact::unused_model_options(contact::find_tangential_model(model_name), mo))
+  const contact::TangentialModelEntry& entry = contact::find_tangential_model(model_name);
+  for (const contact::TangentialOption flag : contact::unused_model_options(entry, mo))
     throw InputError(std::string(contact::option_field_name(flag)) + ": model '" + model_name +
                      "' does not use it (models that do: " + contact::models_reading(flag) + ")");
   const auto model = contact::make_tangential_model(model_name, mo);
