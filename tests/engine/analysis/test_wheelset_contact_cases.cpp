@@ -373,6 +373,10 @@ TEST_CASE("wheelset-contact: omega free finds the free axle's speed; V / r0 driv
   b = a;
   b.y = -a.y, b.yaw = -a.yaw;
   CHECK(engine::wheelset_contact(s, {a})[0].omega == Approx(engine::wheelset_contact(s, {b})[0].omega).epsilon(1e-9));
+  // The library holds the case file's Fz range too (a 1e-6 N load meant a 37 nm patch and minutes of MIM).
+  engine::WheelsetContactPosition tiny = a;
+  tiny.Fz = 1e-6;
+  CHECK_THROWS_WITH(engine::wheelset_contact(s, {tiny}), Catch::Contains("expected a value in [1, 1e6] N per wheel"));
   // Through the program: `omega: free`, the speed used in column omega; a word other than free names the key.
   const std::string dir = test::temp_dir("wheelset_contact_free");
   const std::string head = "wheel: S1002\nrail: UIC60\nmaterial: {G: 8.2e10, nu: 0.28, mu: 0.3}\nspeed: 20\n";
