@@ -227,53 +227,103 @@ void loads_from_shares(const contact::StripSet& s, int jb, int je, const StripWo
 }
 }  // namespace
 
+// On x86-64 a second copy for processors with AVX2 (GCC's target_clones, as
+// StripContactTable::strips): the strip loops below have no branches and run
+// in groups of four strips, one instruction per group there; no FMA, so both
+// copies round alike.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+__attribute__((target_clones("avx2", "default")))
+#endif
 double strip_approach_for_load(const contact::StripSet& s, double Q, double phi_side, double Es, StripLoads& out,
                                PatchShape shape) {
   // Z(w) is increasing and convex-ish (0 while nothing is loaded); Newton from
-  // a Hertz guess, guarded by bisection on a bracket. The bracket and the
-  // iterations need only the vertical load and its derivative: they run on
-  // compact copies of the strips (the same arithmetic as shares() and
-  // loads_from_shares() with dphi = 0); the loads and patches are evaluated
-  // once, at the solution, on the strips that can be loaded there.
+  // a Hertz guess, guarded by bisection on a bracket. Every evaluation fills
+  // the strips' penetrations and load shares (the arithmetic of shares() with
+  // dphi = 0, written per strip without branches: strip q takes from each
+  // neighbouring segment the fraction f of its own end, f = 1 when the
+  // neighbour is penetrated too, else the loaded fraction p_q / (p_q - p_nb)),
+  // so the loads and patches at the solution come from the last evaluation.
+  constexpr int L = 4;  // strips per group
   const int n = s.n;
-  double cos_cache[contact::StripSet::kMax];
-  double cg[contact::StripSet::kMax], ck[contact::StripSet::kMax], cv[contact::StripSet::kMax],
-      cp[contact::StripSet::kMax];
-  bool linked[contact::StripSet::kMax];  // strips q and q+1 are neighbours
+  // Per strip, with one leading and L + 1 trailing entries of an unloaded,
+  // unlinked pad (index -1 and n ... n + L): cos(delta_j), gap, penetration,
+  // Winkler stiffness per half segment, vertical factor, 1 where the left /
+  // right neighbour is the profile's neighbour, and the shares W, dW/dw.
+  constexpr int kN = contact::StripSet::kMax + L + 2;
+  alignas(32) double ccb[kN], cgb[kN], cpb[kN], ckb[kN], cvb[kN], lklb[kN], lkrb[kN], Wb[kN], dWb[kN];
+  double *cc = ccb + 1, *cg = cgb + 1, *cp = cpb + 1, *ck = ckb + 1, *lkl = lklb + 1, *lkr = lkrb + 1;
+  double *W = Wb + 1, *dW = dWb + 1;
+  for (int q : {-1, n, n + 1, n + 2, n + 3, n + 4}) {
+    cc[q] = 1.0;
+    cg[q] = 1.0;
+    cp[q] = -1.0;
+    ck[q] = 0.0;
+    lkl[q] = lkr[q] = 0.0;
+  }
+  for (int q = 0; q < n; ++q) {  // cos(delta) by the Taylor series of cos_angle(), fixed up beyond 0.25 rad below
+    const double x2 = s.angle[q] * s.angle[q];
+    cc[q] = 1.0 + x2 * (-1.0 / 2 + x2 * (1.0 / 24 + x2 * (-1.0 / 720 + x2 * (1.0 / 40320 + x2 * (-1.0 / 3628800 +
+                                                                                               x2 / 479001600.0)))));
+    cg[q] = s.gap[q];
+    ck[q] = 0.5 * s.width * (Es * s.f[q]);
+  }
+  for (int q = 0; q + 1 < n; ++q) lkr[q] = s.index[q + 1] == s.index[q] + 1 ? 1.0 : 0.0;
+  if (n > 0) lkr[n - 1] = 0.0;
+  lkl[0] = 0.0;
+  for (int q = 1; q < n; ++q) lkl[q] = lkr[q - 1];
   double vmin = 1e9;  // vertical approach at which the first strip touches (g_j / cos >= g_j)
   for (int q = 0; q < n; ++q) {
-    const contact::StripPoint sp = s[q];
-    const double c = cos_angle(sp.angle);
-    cos_cache[q] = c;
-    cg[q] = sp.gap;
-    ck[q] = 0.5 * s.width * Es * sp.f;
-    cv[q] = phi_side == 0.0 ? c : std::cos(sp.angle + phi_side);
-    linked[q] = q + 1 < n && s.index[q + 1] == sp.index + 1;
-    if (sp.gap < vmin) vmin = std::min(vmin, sp.gap / c);  // gap / c >= gap
+    if (std::abs(s.angle[q]) >= 0.25) cc[q] = std::cos(s.angle[q]);
+    vmin = std::min(vmin, cg[q] / cc[q]);
   }
-  const double* cc = cos_cache;
-  // Vertical load and its derivative at w over strips [q0, q1) (segments
-  // whose both ends lie in the range).
+  const double* cv = cc;  // vertical factor cos(delta + phi_side)
+  if (phi_side != 0.0) {
+    for (int q = 0; q < n; ++q) cvb[q + 1] = std::cos(s.angle[q] + phi_side);
+    for (int q : {-1, n, n + 1, n + 2, n + 3, n + 4}) cvb[q + 1] = 0.0;
+    cv = cvb + 1;
+  }
+  // Load shares W_j, dW_j/dw over the groups of L strips from q0 (pads and
+  // strips past q1 carry none: unloaded there), and the vertical load with its
+  // derivative at w over strips [q0, q1).
   int q0 = 0, q1 = n;
-  auto vertical = [&](double w, double& V, double& dV) {
-    for (int q = q0; q < q1; ++q) cp[q] = w * cc[q] - cg[q];
-    V = 0.0;
-    dV = 0.0;
-    for (int q = q0; q + 1 < q1; ++q) {
-      const double pa = cp[q], pb = cp[q + 1];
-      if (!linked[q] || !(pa > 0.0 || pb > 0.0)) continue;
-      if (pa > 0.0 && pb > 0.0) {
-        V += ck[q] * pa * cv[q] + ck[q + 1] * pb * cv[q + 1];
-        dV += ck[q] * cc[q] * cv[q] + ck[q + 1] * cc[q + 1] * cv[q + 1];
-      } else {
-        const int e = pa > 0.0 ? q : q + 1, o = pa > 0.0 ? q + 1 : q;
-        const double pe = cp[e], po = cp[o], ce = cc[e], co = cc[o];
-        const double c = pe / (pe - po);
-        const double dc = (ce * (pe - po) - pe * (ce - co)) / ((pe - po) * (pe - po));
-        V += c * ck[e] * pe * cv[e];
-        dV += ck[e] * (dc * pe + c * ce) * cv[e];
+  double w_filled = std::numeric_limits<double>::quiet_NaN();  // the w the shares hold
+  auto vertical = [&](double w, double& V, double& dV) __attribute__((always_inline)) {
+    const int e0 = std::max(0, q0 - 1), e1 = std::min(n, q1 + 1);
+    for (int q = e0; q < e1; ++q) cp[q] = w * cc[q] - cg[q];
+    double v[L] = {}, dv[L] = {};
+    for (int g = q0; g < q1; g += L)
+      for (int l = 0; l < L; ++l) {
+        const int q = g + l;
+        const double p = cp[q], c0 = cc[q];
+        const bool loaded = p > 0.0;
+        // One side (neighbour penetration pn, cosine cn, link flag lk): the
+        // fraction f of the segment's end load and its w-derivative df. Every
+        // operation is done unconditionally (and finite) and selected after,
+        // so that the loop has no branch.
+        auto side = [&](double pn, double cn, double lk, double& Ws, double& dWs) __attribute__((always_inline)) {
+          const double D = p - std::min(pn, 0.0);  // p - pn when the neighbour is unloaded, p otherwise
+          const double iD = 1.0 / std::max(D, 1e-30);  // (D >= p > 0 where used)
+          const bool both = pn > 0.0;
+          const double fr = p * iD;
+          const double dfr = (c0 - p * (c0 - cn) * iD) * iD;
+          const double f = both ? 1.0 : fr;
+          const double df = both ? 0.0 : dfr;
+          const double fp = f * p, dfp = df * p + f * c0;
+          const bool on = loaded & (lk != 0.0);
+          Ws = on ? fp : 0.0;
+          dWs = on ? dfp : 0.0;
+        };
+        double Wl, dWl, Wr, dWr;
+        side(cp[q - 1], cc[q - 1], lkl[q], Wl, dWl);
+        side(cp[q + 1], cc[q + 1], lkr[q], Wr, dWr);
+        W[q] = ck[q] * (Wl + Wr);
+        dW[q] = ck[q] * (dWl + dWr);
+        v[l] += W[q] * cv[q];
+        dv[l] += dW[q] * cv[q];
       }
-    }
+    V = (v[0] + v[1]) + (v[2] + v[3]);
+    dV = (dv[0] + dv[1]) + (dv[2] + dv[3]);
+    w_filled = w;
   };
   double lo = vmin, hi = vmin + 1e-4, Vhi = 0.0, dV = 0.0;
   for (int it = 0; it < 40; ++it) {  // grow the bracket until it carries Q
@@ -314,24 +364,18 @@ double strip_approach_for_load(const contact::StripSet& s, double Q, double phi_
     w = (next > lo && next < hi) ? next : 0.5 * (lo + hi);
     if (hi - lo < 1e-15) break;
   }
-  // Loads and patches at w: only strips with gap < w can be loaded (p <= w -
-  // g); those and one neighbour on each side (the zero crossings).
-  int jb = 0, je = n;
-  {
-    int a = n, b = -1;
-    for (int j = 0; j < n; ++j)
-      if (s.gap[j] < w) {
-        a = std::min(a, j);
-        b = j;
-      }
-    if (b >= 0) {
-      jb = std::max(0, a - 1);
-      je = std::min(n, b + 2);
-    }
+  if (!(w_filled == w)) {  // stopped on the bracket's width: the shares at the last w
+    double V;
+    vertical(w, V, dV);
   }
   StripWork x;
-  shares(s, jb, je, w, 0.0, Es, cos_cache, x);
-  loads_from_shares(s, jb, je, x, phi_side, out, true, shape);
+  for (int q = std::max(0, q0 - 1); q < std::min(n, q1 + 1); ++q) {
+    x.p[q] = cp[q];
+    x.cd[q] = cc[q];
+    x.W[q] = W[q];
+    x.dW[q] = dW[q];
+  }
+  loads_from_shares(s, q0, q1, x, phi_side, out, true, shape);
   return w;
 }
 

@@ -405,3 +405,46 @@ TEST_CASE("profile geometry: patch areas in tread contact against CONTACT, both 
   INFO("largest area deviation from CONTACT: Hertz " << worst[0] * 100 << " %, semi-Hertz " << worst[1] * 100 << " %");
   CHECK(worst[1] < 0.08);
 }
+
+// The lateral model's load-to-approach solve (strip_approach_for_load, one
+// branch-free pass per Newton evaluation that also yields the loads) against
+// the reference pass of strip_loads at the approach it returns, on the
+// S1002/UIC60 strips from the tread to the flange (one and two patches), both
+// wheels' sides of the table (y of either sign), with yaw, a rolled vertical
+// direction and both patch shapes: the same patches, loads and ellipses.
+TEST_CASE("profile geometry: load-to-approach solve equals the load pass at its approach", "[engine][geometry][strips]") {
+  const ProfileGeometry& g = shared_geometry();
+  int two_patch = 0, compared = 0;
+  for (double y_mm = -12.0; y_mm <= 12.0; y_mm += 0.37) {
+    for (double yaw : {0.0, 0.012}) {
+      contact::StripSet s;
+      g.strips(y_mm * 1e-3, yaw, ProfileGeometry::kGapCutoff, s);
+      RigidPose pose;
+      g.rigid_pose(y_mm * 1e-3, yaw, pose);
+      for (double Q : {2e3, 5e4, 1.5e5})
+        for (double phi : {0.0, pose.roll})
+          for (PatchShape shape : {PatchShape::hertz, PatchShape::semi_hertz}) {
+            StripLoads L, R;
+            const double w = strip_approach_for_load(s, Q, phi, g.contact_modulus(), L, shape);
+            strip_loads(s, w, 0.0, phi, g.contact_modulus(), R, true, shape);
+            INFO("y " << y_mm << " mm, yaw " << yaw << ", Q " << Q << " N, roll " << phi);
+            CHECK(L.vertical == Approx(Q).epsilon(1e-9));
+            CHECK(R.vertical == Approx(Q).epsilon(1e-9));
+            CHECK(L.dvertical == Approx(R.dvertical).epsilon(1e-9));
+            REQUIRE(L.n == R.n);
+            for (int k = 0; k < L.n; ++k) {
+              CHECK(L.N[k] == Approx(R.N[k]).epsilon(1e-9));
+              CHECK(L.patch[k].semi_a == Approx(R.patch[k].semi_a).epsilon(1e-9));
+              CHECK(L.patch[k].semi_b == Approx(R.patch[k].semi_b).epsilon(1e-9));
+              CHECK(L.patch[k].contact_angle == Approx(R.patch[k].contact_angle).epsilon(1e-9).margin(1e-12));
+              CHECK(L.patch[k].lateral == Approx(R.patch[k].lateral).epsilon(1e-9));
+              CHECK(L.rate_weight[k] == Approx(R.rate_weight[k]).epsilon(1e-9));
+            }
+            two_patch += L.n >= 2;
+            ++compared;
+          }
+    }
+  }
+  CHECK(compared > 1500);
+  CHECK(two_patch > 0);
+}
