@@ -11,7 +11,8 @@ Data::Data(const Model& model)
       wheel(2 * model.wheelsets.size()),
       rail(model.wheelsets.size()),
       patch(2 * model.wheelsets.size() * WheelGeometry::kMaxPoints),
-      strips(2) {
+      strips(2),
+      contact_record(model.wheelsets.size()) {
   for (std::size_t i = 0; i < wheel.size(); ++i) workspace.push_back(model.coupling.make_workspace());
   failure.reserve(512);
   first_invalid_reason.reserve(128);

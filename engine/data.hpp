@@ -54,6 +54,29 @@ struct RailPosition {
   double support_vertical[2] = {0.0, 0.0}, support_vertical_rate[2] = {0.0, 0.0};
 };
 
+// What the wheel-rail contact of one wheelset added to an evaluation: the
+// increments of the wheelset body's generalised force (added by
+// add_contact_forces, in one order, so that a replay gives the same bits),
+// its spin state's rate and the two wheels' outputs (Data::record_contact,
+// Data::reuse_contact).
+struct WheelsetContactRecord {
+  double lat = 0.0, yaw = 0.0;                  // creep forces' lateral force and yaw moment
+  bool full = false;                            // full model: also these
+  double vert = 0.0, roll = 0.0, yaw_gyro = 0.0;  // vertical force, roll and gyroscopic yaw moments
+  double spin_rate = 0.0;                       // rate of the spin perturbation state
+  WheelOutput wheel[2];
+  long invalid_calls = 0;                       // contacts outside their validity domain
+};
+inline void add_contact_forces(const WheelsetContactRecord& r, GenForce& F) {
+  F[kLat] += r.lat;
+  F[kYaw] += r.yaw;
+  if (r.full) {
+    F[kVert] += r.vert;
+    F[kRoll] += r.roll;
+    F[kYaw] += r.yaw_gyro;
+  }
+}
+
 struct Data {
   explicit Data(const Model& model);
 
@@ -81,6 +104,15 @@ struct Data {
   // the strips of the two wheels of the wheelset being evaluated (25 kB each,
   // kept here so that the right-hand side does not clear them on the stack).
   std::vector<contact::StripSet> strips;
+  // Contact replay for coloured Jacobian differences (ModelOde): with
+  // record_contact set, each wheelset's contribution is kept in
+  // contact_record; with reuse_contact set, a wheelset w with
+  // reuse_contact[w] != 0 takes its recorded contribution instead of solving
+  // its contact again (valid when no state its contact depends on changed:
+  // the caller's responsibility; the result is then the same to the bit).
+  bool record_contact = false;
+  const unsigned char* reuse_contact = nullptr;
+  std::vector<WheelsetContactRecord> contact_record;  // per wheelset
   double t = 0.0, V = 0.0, s = 0.0;
   long rhs_calls = 0;
   long invalid_contact_calls = 0;      // evaluations with a contact outside its validity domain

@@ -223,7 +223,19 @@ bool rhs(const Model& model, Data& d, double t, const double* x, double* xdot) {
   }
   element_forces(model, d, x, xdot);
   for (std::size_t w = 0; w < model.wheelsets.size(); ++w) {
-    if (!wheelset_forces(model, d, int(w), x, xdot)) return false;
+    const Wheelset& ws = model.wheelsets[w];
+    if (d.reuse_contact && d.reuse_contact[w]) {  // replay (data.hpp): the same contribution, the same bits
+      const WheelsetContactRecord& rec = d.contact_record[w];
+      add_contact_forces(rec, d.force[ws.body]);
+      if (ws.beta_state >= 0) xdot[ws.beta_state] = rec.spin_rate;
+      d.wheel[2 * w] = rec.wheel[0];
+      d.wheel[2 * w + 1] = rec.wheel[1];
+      if (rec.invalid_calls > 0 && d.invalid_contact_calls == 0)
+        d.first_invalid_reason = rec.wheel[0].valid ? rec.wheel[1].reason : rec.wheel[0].reason;
+      d.invalid_contact_calls += rec.invalid_calls;
+    } else if (!wheelset_forces(model, d, int(w), x, xdot)) {
+      return false;
+    }
     track_flexibility_rates(model, d, int(w), x, xdot);
   }
   for (std::size_t b = 0; b < nb; ++b) {
@@ -259,9 +271,46 @@ namespace railsim::engine {
 
 ModelOde::ModelOde(const Model& model, Data& data)
     : model_(model), data_(data), pattern_(jacobian_pattern(model)), xp_(model.n_states), fp_(model.n_states),
-      h_(model.n_states) {}
+      h_(model.n_states), recorded_x_(model.n_states) {
+  // The states a wheelset's contact reads: its own (positions, rates, spin
+  // perturbation) and its track's; in the lateral model also every state the
+  // forces of the elements on the wheelset read (its wheel loads follow from
+  // them): the columns with a nonzero in the wheelset's rate rows. A colour
+  // that perturbs none of them can take the wheelset's recorded contact.
+  const JacobianPattern& p = pattern_;
+  const std::size_t nw = model.wheelsets.size();
+  reuse_.assign(std::size_t(p.colors) * nw, 1);
+  std::vector<char> reads(std::size_t(model.n_states));
+  for (std::size_t w = 0; w < nw; ++w) {
+    const Wheelset& ws = model.wheelsets[w];
+    const RigidBody& b = model.bodies[std::size_t(ws.body)];
+    std::fill(reads.begin(), reads.end(), 0);
+    for (int k = 0; k < kNumDof; ++k)
+      for (int i : {b.q_index[k], b.v_index[k]})
+        if (i >= 0) reads[std::size_t(i)] = 1;
+    if (ws.beta_state >= 0) reads[std::size_t(ws.beta_state)] = 1;
+    for (int i : ws.track_states())
+      if (i >= 0) reads[std::size_t(i)] = reads[std::size_t(i) + 1] = 1;
+    if (model.wheelset_model == WheelsetModel::lateral)
+      for (int j = 0; j < p.n; ++j)
+        for (int k = p.colptr[std::size_t(j)]; k < p.colptr[std::size_t(j) + 1]; ++k)
+          for (int dof = 0; dof < kNumDof; ++dof)
+            if (b.v_index[dof] >= 0 && p.rowind[std::size_t(k)] == b.v_index[dof]) reads[std::size_t(j)] = 1;
+    for (int j = 0; j < p.n; ++j)
+      if (reads[std::size_t(j)]) reuse_[std::size_t(p.color[std::size_t(j)]) * nw + w] = 0;
+  }
+}
 
-bool ModelOde::rhs(double t, const double* x, double* xdot) { return engine::rhs(model_, data_, t, x, xdot); }
+bool ModelOde::rhs(double t, const double* x, double* xdot) {
+  data_.record_contact = true;
+  recorded_ = engine::rhs(model_, data_, t, x, xdot);
+  data_.record_contact = false;
+  if (recorded_) {
+    recorded_t_ = t;
+    std::copy(x, x + model_.n_states, recorded_x_.begin());
+  }
+  return recorded_;
+}
 
 std::string ModelOde::failure_message() const {
   char buf[96];
@@ -301,6 +350,12 @@ bool ModelOde::coloured_differences(double t, const double* x, const double* fx,
   const int n = model_.n_states;
   const JacobianPattern& p = pattern_;
   for (int j = 0; j < n; ++j) h_[std::size_t(j)] = 1e-7 * std::max(1.0, std::abs(x[j])) + 1e-9;
+  // Each colour solves again only the contacts of the wheelsets whose states
+  // it perturbs; the others replay the evaluation at (t, x) (the integrator's
+  // last one, as a rule; else it is made here).
+  if (!(recorded_ && t == recorded_t_ && std::equal(x, x + n, recorded_x_.begin())) && !rhs(t, x, fp_.data()))
+    return false;
+  const std::size_t nw = model_.wheelsets.size();
   for (int c = 0; c < p.colors; ++c) {
     std::copy(x, x + n, xp_.begin());
     bool any = false;
@@ -310,7 +365,10 @@ bool ModelOde::coloured_differences(double t, const double* x, const double* fx,
         any = true;
       }
     if (!any) continue;
-    if (!engine::rhs(model_, data_, t, xp_.data(), fp_.data())) return false;
+    data_.reuse_contact = &reuse_[std::size_t(c) * nw];
+    const bool ok = engine::rhs(model_, data_, t, xp_.data(), fp_.data());
+    data_.reuse_contact = nullptr;
+    if (!ok) return false;
     for (int j = 0; j < n; ++j) {
       if (p.color[std::size_t(j)] != c) continue;
       for (int k = p.colptr[std::size_t(j)]; k < p.colptr[std::size_t(j) + 1]; ++k) {

@@ -64,6 +64,13 @@ class ModelOde final : public OdeSystem {
   Data& data_;
   JacobianPattern pattern_;
   std::vector<double> xp_, fp_, h_;
+  // Contact replay (Data::reuse_contact): reuse_[c * wheelsets + w] = 1 when
+  // colour c perturbs no state wheelset w's contact reads; the evaluation the
+  // records belong to (the last rhs() that succeeded).
+  std::vector<unsigned char> reuse_;
+  bool recorded_ = false;
+  double recorded_t_ = 0.0;
+  std::vector<double> recorded_x_;
 };
 
 }  // namespace railsim::engine

@@ -293,6 +293,7 @@ void wheelset_kinematics(const Model& model, Data& d, int w) {
 }
 
 bool wheelset_forces(const Model& model, Data& d, int w, const double* x, double* xdot) {
+  const long invalid_before = d.invalid_contact_calls;
   const Wheelset& ws = model.wheelsets[w];
   const RigidBody& body = model.bodies[ws.body];
   const BodyMotion& m = d.motion[ws.body];
@@ -460,15 +461,26 @@ bool wheelset_forces(const Model& model, Data& d, int w, const double* x, double
       ++d.invalid_contact_calls;
     }
   }
-  F[kLat] += Fy_sum;
-  F[kYaw] += Mz_sum;
+  WheelsetContactRecord inc;
+  inc.lat = Fy_sum;
+  inc.yaw = Mz_sum;
+  inc.full = full;
   if (full) {
     const double Iy = body.inertia.y();
-    F[kVert] += Fz_sum;
-    F[kRoll] += Mx_sum + Iy * k.Omega * (k.psidot + d.V * k.kappa);  // absolute yaw rate (frame turns at V kappa)
-    F[kYaw] += -Iy * k.Omega * k.phidot;
+    inc.vert = Fz_sum;
+    inc.roll = Mx_sum + Iy * k.Omega * (k.psidot + d.V * k.kappa);  // absolute yaw rate (frame turns at V kappa)
+    inc.yaw_gyro = -Iy * k.Omega * k.phidot;
   }
+  add_contact_forces(inc, F);
   if (ws.beta_state >= 0) xdot[ws.beta_state] = My_sum / body.inertia.y();
+  if (d.record_contact) {  // kept for replay (data.hpp)
+    WheelsetContactRecord& rec = d.contact_record[std::size_t(w)];
+    rec = inc;
+    rec.spin_rate = ws.beta_state >= 0 ? xdot[ws.beta_state] : 0.0;
+    rec.wheel[0] = d.wheel[2 * std::size_t(w)];
+    rec.wheel[1] = d.wheel[2 * std::size_t(w) + 1];
+    rec.invalid_calls = d.invalid_contact_calls - invalid_before;
+  }
   return true;
 }
 

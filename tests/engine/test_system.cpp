@@ -1,14 +1,23 @@
 // System assembly: static equilibrium of the Manchester coach (wheel loads =
 // static weight share) and no drift in steady running on straight, level,
-// perfect track; the bogie alone likewise.
+// perfect track; the bogie alone likewise; the coloured Jacobian's contact
+// replay.
 #include <catch2/catch.hpp>
 
 #include <cmath>
 #include <string>
 
+#include <yaml-cpp/yaml.h>
+
+#include <vector>
+
+#include "config/yaml_input.hpp"
+#include "engine/integrators/jacobian_pattern.hpp"
+#include "engine/io/scenario.hpp"
 #include "engine/simulation.hpp"
 #include "engine/system.hpp"
 #include "engine_test_support.hpp"
+#include "test_support.hpp"
 
 using namespace railsim;
 
@@ -70,4 +79,69 @@ TEST_CASE("bogie under a fixed car body: frame weight shared by primary and seco
   Eigen::VectorXd xd(sc.model.n_states);
   engine::rhs_or_throw(sc.model, d, 0.0, sc.x0.data(), xd.data());
   for (const auto& w : d.wheel) CHECK(w.Q == Approx(share).epsilon(1e-3));
+}
+
+// Coloured Jacobian differences replay the contact of every wheelset whose
+// states a colour does not perturb (ModelOde, Data::reuse_contact). The
+// Jacobian must be the one of plain coloured differences to the bit: in both
+// wheelset models (the lateral model's wheel loads read the suspension, the
+// full model's only the wheelset), on profiles with yaw and a flexible track
+// (curve_twist) and on the Cooperrider car's geometry table; also when the
+// integrator's last evaluation was at another state (the records are then
+// made again at the Jacobian's state).
+TEST_CASE("coloured Jacobian with contact replay equals plain coloured differences", "[engine][system][jacobian]") {
+  for (const char* file : {"scenarios/manchester_coach_curve_twist.yaml", "scenarios/cooperrider_car_dytsi.yaml"})
+    for (const char* model : {"lateral", "full"}) {
+      INFO(file << ", " << model << " wheelset model");
+      const std::string path = test::source_path(file);
+      YAML::Node node = YAML::LoadFile(path);
+      node["wheelset_model"] = model;
+      const engine::Scenario sc =
+          engine::load_scenario(config::InputNode(node, path, ""), test::source_path("scenarios"));
+      const int n = sc.model.n_states;
+      // A state off the centre: every wheelset shifted and yawed, the car rolled.
+      Eigen::VectorXd x = sc.x0;
+      for (const auto& w : sc.model.wheelsets) {
+        const auto& b = sc.model.bodies[std::size_t(w.body)];
+        x[b.q_index[engine::kLat]] += 2e-3;
+        x[b.q_index[engine::kYaw]] += 1e-3;
+        x[b.v_index[engine::kLat]] += 0.01;
+      }
+      const double t = 0.7;
+      engine::Data d(sc.model);
+      engine::ModelOde ode(sc.model, d);
+      const engine::JacobianPattern& p = ode.sparsity();
+      Eigen::VectorXd fx(n), fother(n), xother = x;
+      xother[0] += 1e-4;
+      REQUIRE(ode.rhs(t, x.data(), fx.data()));
+      std::vector<double> replayed(std::size_t(p.nonzeros())), again(replayed.size()), plain(replayed.size());
+      REQUIRE(ode.sparse_jacobian(t, x.data(), fx.data(), replayed.data()));
+      REQUIRE(ode.rhs(t, xother.data(), fother.data()));  // the last evaluation elsewhere
+      REQUIRE(ode.sparse_jacobian(t, x.data(), fx.data(), again.data()));
+      // Plain coloured differences, every contact solved, on a Data of its own.
+      engine::Data d2(sc.model);
+      Eigen::VectorXd xp(n), fp(n);
+      for (int c = 0; c < p.colors; ++c) {
+        xp = x;
+        for (int j = 0; j < n; ++j)
+          if (p.color[std::size_t(j)] == c) xp[j] += 1e-7 * std::max(1.0, std::abs(x[j])) + 1e-9;
+        REQUIRE(engine::rhs(sc.model, d2, t, xp.data(), fp.data()));
+        for (int j = 0; j < n; ++j) {
+          if (p.color[std::size_t(j)] != c) continue;
+          for (int k = p.colptr[std::size_t(j)]; k < p.colptr[std::size_t(j) + 1]; ++k) {
+            const int i = p.rowind[std::size_t(k)];
+            plain[std::size_t(k)] = p.kinematic_row[std::size_t(i)]
+                                        ? (p.kinematic_col[std::size_t(i)] == j ? 1.0 : 0.0)
+                                        : (fp[i] - fx[i]) / (1e-7 * std::max(1.0, std::abs(x[j])) + 1e-9);
+          }
+        }
+      }
+      int differ = 0, contact_rows = 0;
+      for (std::size_t k = 0; k < plain.size(); ++k) {
+        differ += replayed[k] != plain[k] || again[k] != plain[k];
+        contact_rows += plain[k] != 0.0;
+      }
+      CHECK(differ == 0);
+      CHECK(contact_rows > n);
+    }
 }
