@@ -134,7 +134,7 @@ int run_wheelset_contact(const WheelsetContactArgs& a) {
 
   std::vector<std::string> cols = {"y", "yaw", "roll", "omega"};
   for (const char* w : {"left", "right"})
-    for (const char* f : {"Fx", "Fy", "Fz", "patches"}) cols.push_back(std::string(w) + "_" + f);
+    for (const char* f : {"Fx", "Fy", "Fz", "patches", "climbing"}) cols.push_back(std::string(w) + "_" + f);
   const char* fields[] = {"N", "y_wheel", "y_rail", "y_track", "x_track", "rolling_radius", "contact_angle",
                           "a", "b", "xi", "eta", "spin", "Fx_patch", "Fy_patch"};
   for (const char* w : {"left", "right"})
@@ -143,7 +143,8 @@ int run_wheelset_contact(const WheelsetContactArgs& a) {
   results::CsvWriter csv(a.out, cols, false, 0, 10);
   for (const auto& r : res) {
     csv.cell(r.position.y).cell(r.position.yaw).cell(r.roll).cell(r.omega);
-    for (const auto& w : r.wheel) csv.cell(w.Fx).cell(w.Fy).cell(w.Fz).cell(long(w.patches.size()));
+    for (const auto& w : r.wheel)
+      csv.cell(w.Fx).cell(w.Fy).cell(w.Fz).cell(long(w.patches.size())).cell(long(w.climbing));
     for (const auto& w : r.wheel)
       for (int k = 0; k < patch_columns; ++k) {
         if (k < int(w.patches.size())) {
@@ -158,6 +159,8 @@ int run_wheelset_contact(const WheelsetContactArgs& a) {
     csv.end_row();
   }
   csv.close();
+  for (const auto& r : res)
+    for (const auto& w : r.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
   std::printf("wrote %s (%zu positions, model %s)\n", a.out.c_str(), res.size(), a.model.c_str());
   return kExitSuccess;
 }

@@ -74,10 +74,43 @@ std::vector<WheelsetContactResult> wheelset_contact(const WheelsetContactSetup& 
   auto model = contact::make_tangential_model(s.model, s.model_options);
   auto ws = model->make_workspace();
   const double Es = s.material.combined_modulus();
+  // The flange's steepest point: the largest contact angle of the left
+  // wheel's rigid contact over the shift toward its flange at zero yaw (0.1 mm
+  // steps up to where the search finds the flange tip); the right wheel is its
+  // mirror image.
+  double steepest = 0.0, y_steepest = 0.0;
+  for (double y = 0.0; y <= 0.03; y += 1e-4) {
+    contact::WheelsetContact c;
+    try {
+      c = geo.solve(y, 0.0);
+    } catch (const InputError&) {
+      break;
+    }
+    const double angle = c.wheel[std::size_t(contact::Side::left)].p[0].angle;
+    if (angle > steepest) {
+      steepest = angle;
+      y_steepest = y;
+    }
+  }
   std::vector<WheelsetContactResult> out;
   for (std::size_t k = 0; k < positions.size(); ++k) {
     try {
       out.push_back(solve_position(s, geo, *model, ws.get(), Es, positions[k]));
+      WheelsetContactResult& r = out.back();
+      for (int i = 0; i < 2; ++i) {
+        const double sg = i == 0 ? 1.0 : -1.0;
+        double flange = 0.0;  // the steepest flange-side angle of the wheel's patches
+        for (const auto& P : r.wheel[i].patches) flange = std::max(flange, sg * P.contact_angle);
+        constexpr double kDeg = M_PI / 180.0;
+        if (sg * r.position.y > y_steepest + 1e-4 && flange < steepest - 0.5 * kDeg) {
+          r.wheel[i].climbing = true;
+          r.warnings.push_back(where_of(positions, k) + ": the " + (i == 0 ? "left" : "right") +
+                               " wheel is climbing its flange: shifted " + num(std::abs(r.position.y) * 1e3) +
+                               " mm, past the flange's steepest point (" + num(steepest / kDeg) + " deg at " +
+                               num(y_steepest * 1e3) + " mm, zero yaw), it touches at " + num(flange / kDeg) +
+                               " deg (Nadal's limit falls with the angle: a running wheelset derails here)");
+        }
+      }
     } catch (const InputError& e) {  // a position outside what the geometry can solve (e.g. on the flange tip)
       throw InputError(where_of(positions, k) + ": " + e.what());
     } catch (const NumericalError& e) {  // a solver that did not converge: numerical, named the same way

@@ -21,7 +21,11 @@
 //     V / r0, or (free_rolling) the speed at which the creep forces put no
 //     torque on the axle;
 //  4. the forces of the wheel on the rail, summed over the patches, in
-//     railsim's track frame (x forward, y left, z up).
+//     railsim's track frame (x forward, y left, z up);
+//  5. a wheel shifted past its flange's steepest point (the largest contact
+//     angle of the rigid contact over the shift at zero yaw, found once per
+//     set-up) that touches at a flatter flange angle is flagged as climbing,
+//     with a warning: the pose is one a running wheelset does not keep.
 // Conventions of CONTACT's track frame (x forward, y to the right, z down:
 // railsim's rotated by 180 degrees about x): y_C = -y, psi_C = -psi, phi_C =
 // phi, omega_C = -omega, F_C = (Fx, -Fy, -Fz).
@@ -83,6 +87,11 @@ struct WheelsetContactPatch {
 struct WheelsetContactWheel {
   double Fx = 0.0, Fy = 0.0, Fz = 0.0;  // total force of the wheel on the rail, track frame [N]
   double approach = 0.0;                // vertical approach from the touching pose [m]
+  // The wheel is shifted past the point where its flange is steepest (at zero
+  // yaw) and touches the flange at a flatter angle: it is climbing its
+  // flange, where a running wheelset derails (the forces are those of the
+  // prescribed pose all the same).
+  bool climbing = false;
   std::vector<WheelsetContactPatch> patches;
 };
 
@@ -91,6 +100,7 @@ struct WheelsetContactResult {
   double roll = 0.0;   // roll used [rad]
   double omega = 0.0;  // rolling speed used [rad/s] (given, V / r0, or the free axle's)
   WheelsetContactWheel wheel[2];  // left, right
+  std::vector<std::string> warnings;  // e.g. a wheel climbing its flange, naming the position
 };
 
 // Throws InputError for bad set-ups (naming `where`, the key and, when the

@@ -16,6 +16,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "core/errors.hpp"
 #include "engine/analysis/wheelset_contact_cases.hpp"
@@ -203,6 +204,49 @@ TEST_CASE("wheelset-contact: the mirrored pose gives the mirrored forces, with a
         }
         CHECK(a[0].roll == Approx(-b[0].roll).margin(1e-9));
       }
+    }
+  }
+}
+
+// A wheel shifted past its flange's steepest point touches the flange at a
+// flatter angle: climbing (S1002 on UIC60 1:40: 70 deg at 6.4 mm of shift).
+// Flagged on the wheel that climbs, for either sign of the shift and of the
+// yaw, with a warning naming the position; the tread, the flange root and
+// the steepest flange contact itself are not.
+TEST_CASE("wheelset-contact: a wheel past its flange's steepest point is flagged as climbing",
+          "[engine][analysis][contact]") {
+  engine::WheelsetContactSetup s;
+  s.track.inclination = std::atan(1.0 / 40.0);
+  s.speed = 20.0;
+  s.model = "fastsim";
+  std::vector<engine::WheelsetContactPosition> pos;
+  for (const double y : {0.0, 0.003, 0.006, 0.009, 0.012, 0.015})
+    for (const double sign : {1.0, -1.0})
+      for (const double yaw : {0.0, 0.005, -0.005}) {
+        engine::WheelsetContactPosition p;
+        p.y = sign * y;
+        p.yaw = yaw;
+        p.Fz = 6.0e4;
+        p.where = "case " + std::to_string(pos.size());
+        pos.push_back(p);
+      }
+  const auto res = engine::wheelset_contact(s, pos);
+  REQUIRE(res.size() == pos.size());
+  for (std::size_t k = 0; k < res.size(); ++k) {
+    const auto& r = res[k];
+    const double y = r.position.y;
+    INFO("y " << y * 1e3 << " mm, yaw " << r.position.yaw);
+    const bool past = std::abs(y) >= 0.009;  // beyond 6.4 mm with a margin for the yaw
+    const int climbing_wheel = y > 0 ? 0 : 1;
+    CHECK(r.wheel[climbing_wheel].climbing == past);
+    CHECK_FALSE(r.wheel[1 - climbing_wheel].climbing);
+    CHECK(r.warnings.size() == (past ? 1u : 0u));
+    if (past) {
+      CHECK(r.warnings[0].find(pos[k].where + ": the " + (y > 0 ? "left" : "right") + " wheel is climbing") == 0);
+      double steepest = 0.0;  // the flange patch is flatter than 70 deg
+      for (const auto& P : r.wheel[climbing_wheel].patches)
+        steepest = std::max(steepest, std::abs(P.contact_angle));
+      CHECK(steepest < 69.0 * M_PI / 180.0);
     }
   }
 }
