@@ -191,17 +191,15 @@ bool distributed_loads(const Model& model, Data& d, int w, const WheelsetKinemat
     const int side = i == 0 ? 1 : -1;
     geo.strips(side * k.y, side * k.psi, kLateralFirstCutoff, strips[i]);
     double num = 0.0, den = 0.0, vmin = 1e9, amin = geo.l0();
-    for (int j = 0; j < strips[i].n; ++j) {
-      const contact::StripPoint q = strips[i][j];
-      const double u = 1.0 - q.gap / 2e-4;
-      if (u > 0.0) {
-        num += u * u * q.lateral;
-        den += u * u;
-      }
-      if (q.gap < vmin) {
-        vmin = q.gap;
-        amin = q.lateral;
-      }
+    const contact::StripSet& set = strips[i];
+    for (int j = 0; j < set.n; ++j) {  // (written with selects, not branches: the same sums)
+      const double gap = set.gap[j], lat = set.lateral[j];
+      const double u = std::max(0.0, 1.0 - gap / 2e-4);
+      num += u * u * lat;
+      den += u * u;
+      const bool lower = gap < vmin;
+      vmin = lower ? gap : vmin;
+      amin = lower ? lat : amin;
     }
     a[i] = den > 0.0 ? num / den : amin;
   }
