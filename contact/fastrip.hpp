@@ -392,7 +392,43 @@
 //    lag length falls below the element), and the displacement of a
 //    Hertz-shaped sliding traction (as (l), by quadrature on each ellipse)
 //    over L3 is 0.85 / 0.69 / 0.68 / 0.67 on a/b 0.2 / 1 / 1.33 / 5, the
-//    opposite trend. Not taken.)
+//    opposite trend. Not taken.
+//    (n) The sliding march converged (a lead, not taken). With |T| at the
+//    bound the march's explicit step plus radial return is first order, and
+//    deep in slip one element step turns the traction by tens of degrees:
+//    aob0.2 / aob1 / aob1.33 lat_spin 0.005/-2 at nx 10 / 20 / 40 / 80 / 160
+//    elements per strip: 13.1 / 10.3 / 8.9 / 8.2 / 7.9, 12.6 / 9.7 / 8.4 /
+//    7.8 / 7.5, 11.6 / 9.0 / 7.9 / 7.4 / 7.1 %, while aob5/lat_spin/0/0.001/-1
+//    goes 9.7 / 10.4 / 10.5 / 10.9 / 10.8 % (why today's 40 x 40 and 80 x 80
+//    are not better). Substeps in the sliding branch only (m equal substeps
+//    per element, the bound at each substep's end, increments as now): m 2
+//    10.46 / 2.47 %, m 4 10.51 / 2.49 %, m 8 10.53 / 2.53 % (aob0.2/lat_spin/
+//    0/0.005/-2 9.09 / - / 8.16 %; the maximum is then aob5 alone), and the
+//    live MIM circle (test_fastrip.cpp, m 4) improves in every case: xi
+//    0.002, eta 0.001, phi -1.5 7.42 -> 4.30 %, phi 1.5 3.43 -> 1.18 %, xi
+//    0.001, phi 1 2.91 -> 2.18 %, eta 0.001, phi -1 3.14 -> 0.94 %, deep
+//    slip 1.31 -> 0.63 %, the CONTACT pure-spin curve (20 x 20) 0.122 ->
+//    0.081; but the pure-spin family mean rises 2.25 -> 2.71 % (FASTSIM
+//    2.35 %, test limit) and `combined` max to 10.05 %: the coarse march's
+//    error had been helping pure spin on a/b 0.2 and 5. Together with (a)
+//    (L3_j = L3 t_j / tau), which failed on the circle before: m 4 8.95 /
+//    2.32 % (worst aob5/lat_spin/0/0.01/-2; 10 x 10 9.88, 40 x 40 9.29 %;
+//    m 2 9.15, m 8 8.92 %), aob5/lat_spin/0/0.001/-1 below 8.9 %, live MIM
+//    circle within its limits (opposing xi 0.002, eta 0.001, phi -1.5 7.00
+//    %, eta 0.001, phi -1 4.56 %; same sign at most 3.36 % and below
+//    FASTSIM), deep slip 0.61 %, CONTACT spin curve passes; every [fastrip]
+//    and [reference] check passes except the pure-spin family mean, 2.59 %
+//    against FASTSIM's 2.35 % (m 2 2.41 %, m 8 2.71 %; a/b 0.2 mean 2.00 ->
+//    2.82 %: aob0.2/spin/0/0/0.25 Fy -0.187 against -0.220, /4 -0.062
+//    against -0.074; a/b 5 3.27 -> 3.77 %, phi 1.5 - 5 each 0.9 - 1.6 %
+//    further off, too low). With (a), substeps only where an element's
+//    increment exceeds a fraction f of the bound (adaptive): f 0.5 9.93 %, spin mean 2.26 %, but
+//    the live circle xi 0.002, eta 0.001, phi -1.5 9.9 % (f 0.35: 9.3 %;
+//    limit 8 %). Cost: m 4 costs up to four element steps per sliding
+//    element (with a square root per substep unless the bound is tabulated).
+//    Next candidate: (a) + the converged sliding march, plus a derived fix
+//    of the converged model's pure spin on a/b 0.2 and 5 (too little lag at
+//    large spin), which is what the coarse march had been hiding.)
 // 5. Integration: the strip-theory traction is integrated analytically over
 //    each element (force and first moment), the spin correction by the
 //    midpoint rule at element centres; strips by the midpoint rule. The
