@@ -108,7 +108,7 @@ ContactForces Fastrip::compute(const ContactInput& in, TangentialWorkspace* /*ws
   // strip, (xi - phi y_j, eta), pulls with one flexibility Lu = sqrt(L1 L2)
   // (Kalker's L1 = 8a/(3 G C11 k11), L2 = 8a/(3 G C22 k22)), so that the
   // traction turns towards the direction of that slip; the lateral spin slip
-  // phi x, which varies along the strip, keeps the spin flexibility L3.
+  // phi x, which varies along the strip, keeps the spin flexibility (L3_j, step 4b).
   const double Lu = 8.0 * a / (3.0 * G * std::sqrt(C.C11 * k.k11 * C.C22 * k.k22));
   const double ux = in.creep.xi / Lu, uy = in.creep.eta / Lu, upx = in.creep.phi / Lu;
   const double creep_norm = std::sqrt(in.creep.xi * in.creep.xi + in.creep.eta * in.creep.eta);

@@ -81,7 +81,7 @@
 //      to the direction of that slip instead of a direction skewed by
 //      L1 != L2 != L3 (FASTSIM's large error on wide patches with spin);
 //      the lateral spin slip phi x, which varies along the strip, keeps
-//      Kalker's L3 (the elastic spin force of the strip);
+//      the spin flexibility, L3_j of step 4b (the elastic spin force);
 //      for pure spin (no creepage) -phi y_j keeps L3 as in FASTSIM, blended
 //      towards Lu by om = |(xi, eta)| / (0.1 |phi| c) in [0, 1];
 //    then the bound again. Without spin the strip never slides before the
