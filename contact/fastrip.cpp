@@ -55,6 +55,16 @@ Fastrip::Fastrip(const FastripOptions& options)
   load_scale_ = (4.0 / 3.0) / s2;
   k_scale_ = s1 / (kPi / 2.0);
   l3_scale_ = s3 * par / (kPi / 2.0);
+  tau_ = s3 / s2;
+  sub_sq_.resize(nx * kSub);
+  sub_xm_.resize(nx * kSub);
+  for (std::size_t k = 0; k < nx; ++k) {
+    for (int i = 1; i <= kSub; ++i) {
+      const double Xe = grid_.Xc[k] + grid_.step[k] * (1.0 - static_cast<double>(i) / kSub);
+      sub_sq_[k * kSub + i - 1] = std::sqrt(std::max(0.0, 1.0 - Xe * Xe));
+      sub_xm_[k * kSub + i - 1] = grid_.Xc[k] + grid_.step[k] * (1.0 - (i - 0.5) / kSub);
+    }
+  }
 }
 
 ContactForces Fastrip::compute(const ContactInput& in, TangentialWorkspace* /*ws*/) const {
@@ -98,7 +108,7 @@ ContactForces Fastrip::compute(const ContactInput& in, TangentialWorkspace* /*ws
   // strip, (xi - phi y_j, eta), pulls with one flexibility Lu = sqrt(L1 L2)
   // (Kalker's L1 = 8a/(3 G C11 k11), L2 = 8a/(3 G C22 k22)), so that the
   // traction turns towards the direction of that slip; the lateral spin slip
-  // phi x, which varies along the strip, keeps the spin flexibility L3.
+  // phi x, which varies along the strip, keeps the spin flexibility (L3_j, step 4b).
   const double Lu = 8.0 * a / (3.0 * G * std::sqrt(C.C11 * k.k11 * C.C22 * k.k22));
   const double ux = in.creep.xi / Lu, uy = in.creep.eta / Lu, upx = in.creep.phi / Lu;
   const double creep_norm = std::sqrt(in.creep.xi * in.creep.xi + in.creep.eta * in.creep.eta);
@@ -109,7 +119,9 @@ ContactForces Fastrip::compute(const ContactInput& in, TangentialWorkspace* /*ws
                         ? std::min(1.0, creep_norm / (0.1 * std::abs(in.creep.phi) * std::sqrt(a * b)))
                         : 1.0;
   const double upxw = om * upx + (1.0 - om) * in.creep.phi / L3;
-  const double spy = in.creep.phi / L3;   // lateral spin slip / L3 per metre of x
+  // Lateral spin slip phi x / L3 per metre of x; per strip times tau / t_j
+  // (L3_j = L3 t_j / tau, step 4b).
+  const double spy_tau = in.creep.phi / L3 * tau_;
   const double spx = in.creep.phi / L3;   // longitudinal spin slip / L3 per metre of y
 
   // Weight of the full-slip trigger (step 4): the normalised spin
@@ -125,6 +137,7 @@ ContactForces Fastrip::compute(const ContactInput& in, TangentialWorkspace* /*ws
   const auto nx = static_cast<std::size_t>(grid_.nx);
   const StripSums sums = grid_.sum_strips(a, b, [&](std::size_t j, double y, double aj) {
     const double gj = mu * p0 * grid_.t[j];  // mu p0_j: peak of the strip's bound
+    const double spy = spy_tau / grid_.t[j];  // phi / L3_j
     // Carter solution of the strip (step 2): adhesion centre d, half-length ar.
     const double S = (gj > 0.0) ? W / gj : 1.0;  // Carter's slip measure |w| / (mu p0_j)
     double d = 0.0, ar = aj;
@@ -182,9 +195,25 @@ ContactForces Fastrip::compute(const ContactInput& in, TangentialWorkspace* /*ws
       if (W > 0.0 && x < xs) slides = true;
       if (slides) {
         // Sliding strip: no more strip-theory increments (cancelled in s); the
-        // total traction is marched as in FASTSIM (step 4).
-        sx -= (q - qprev) * ex + pgx * dx;
-        sy -= (q - qprev) * ey + uy * dx + spy * xmdx;
+        // total traction is marched as in FASTSIM (step 4), in kSub substeps,
+        // each returned onto the bound at its end (step 4c).
+        double tx = qprev * ex + sx, ty = qprev * ey + sy;
+        const double h = dx * (1.0 / kSub), hx = pgx * h, hy = uy * h, hs = spy * aj * h;
+        const double* sq = &sub_sq_[kk * kSub];
+        const double* xm = &sub_xm_[kk * kSub];
+        for (int i = 0; i < kSub; ++i) {
+          tx -= hx;
+          ty -= hy + hs * xm[i];
+          const double gi = gj * sq[i];
+          const double t2 = tx * tx + ty * ty;
+          if (t2 > gi * gi) {
+            const double sc = gi / std::sqrt(t2);
+            tx *= sc;
+            ty *= sc;
+          }
+        }
+        sx = tx - q * ex;
+        sy = ty - q * ey;
       } else {
         // Spin, FASTSIM-like (step 4), on top of the strip traction.
         sx += sgx * dx;

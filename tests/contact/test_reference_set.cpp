@@ -148,15 +148,15 @@ TEST_CASE("reference set: MIM grid convergence with spin, grid 60 against grid 1
   CHECK(n >= 30);
 }
 
-TEST_CASE("reference set: FaStrip is closer than FASTSIM, within 10.5 % of mu Fz", "[contact][reference][fastrip]") {
+TEST_CASE("reference set: FaStrip is closer than FASTSIM, within 10 % of mu Fz", "[contact][reference][fastrip]") {
   // Measured (grid 20 x 20) against the extrapolated reference: fastrip max
-  // 10.40 % (aob5/lat_spin/0/0.001/-1), mean 2.54 %; fastsim (blended)
-  // 21.4 %, 2.83 %; fastsim_kalker 24.0 %, 4.20 % (against plain grid 120:
-  // 10.29, 21.2, 24.0 %). Before issue 15 FaStrip stalled with lateral creepage opposing
-  // spin: max 119 % of mu Fz. The issue's target of 10 % is missed by 0.4 %:
-  // on the long patch (a/b 5) the Winkler spin part is 9 % low at the pure-spin
-  // peak (FASTSIM's error too, independent of the grid: 9.06 / 9.08 / 9.08 % at
-  // 20 / 40 / 80 elements) and small lateral creepage against spin adds to it.
+  // 8.95 % (aob5/lat_spin/0/0.01/-2), mean 2.23 %; fastsim (blended)
+  // 21.4 %, 2.83 %; fastsim_kalker 24.0 %, 4.20 %. Before issue 15 FaStrip
+  // stalled with lateral creepage opposing spin: max 119 % of mu Fz; then
+  // 10.40 % (aob5/lat_spin/0/0.001/-1: the Winkler spin part 9 % low at the
+  // pure-spin peak on a/b 5) until the per-strip lateral spin flexibility and
+  // the substeps of the sliding march (fastrip.hpp, steps 4b and 4c), which
+  // meet the issue's 10 % (10 x 10 9.88 %, 40 x 40 9.29 %, 80 x 80 9.85 %).
   const auto& set = reference();
   const auto fr = make_tangential_model("fastrip");
   const auto fs = make_tangential_model("fastsim");
@@ -165,15 +165,16 @@ TEST_CASE("reference set: FaStrip is closer than FASTSIM, within 10.5 % of mu Fz
   WARN("fastrip max " << 100 * efr.max << " % (" << efr.worst << "), mean " << 100 * efr.mean << " %; fastsim max "
                       << 100 * efs.max << " % (" << efs.worst << "), mean " << 100 * efs.mean << " %; fastsim_kalker max "
                       << 100 * efk.max << " %, mean " << 100 * efk.mean << " %");
-  CHECK(efr.max < 0.105);
+  CHECK(efr.max < 0.10);
   CHECK(efr.max < efs.max);
   CHECK(efr.max < efk.max);
   CHECK(efr.mean < efs.mean);
-  // Per family: FaStrip's largest error is below FASTSIM's, except in
-  // `combined` (xi, eta, phi together), where both have their worst point at
-  // aob5/combined/0.001/-0.001/1 (fastrip 9.68 %, fastsim 9.60 %): there it
-  // stays below the 10 % target. (Means: FaStrip's is above FASTSIM's with
-  // longitudinal creepage + spin, 3.04 % against 2.72 %; below elsewhere.)
+  // Per family: FaStrip's largest error is below FASTSIM's; in `combined`
+  // (xi, eta, phi together) the check is the 10 % target (measured: fastrip
+  // 5.96 %, fastsim 9.69 %, both at aob5/combined/0.001/-0.001/1; before
+  // steps 4b and 4c fastrip 9.77 %). Means: below FASTSIM's in every family
+  // (longitudinal creepage + spin 2.59 % against 2.72 %, before 3.03 %; not
+  // checked there).
   for (const char* fam : {"lat_spin", "long_spin", "spin", "creep", "combined"}) {
     const auto in_family = [&](const ReferenceState& s) { return s.family == fam; };
     const auto a = set_error(*fr, set, in_family), b = set_error(*fs, set, in_family);
@@ -186,7 +187,7 @@ TEST_CASE("reference set: FaStrip is closer than FASTSIM, within 10.5 % of mu Fz
     if (std::string(fam) != "long_spin") CHECK(a.mean < b.mean);
   }
   // The stall of issue 15: circular patch, phi = 1 1/m, eta = -0.01 (CONTACT
-  // +0.936 mu Fz; FaStrip gave +0.198, now +0.894: 4.0 % of mu Fz off).
+  // +0.936 mu Fz; FaStrip gave +0.198, now +0.898: 3.7 % of mu Fz off).
   for (const auto& s : set)
     if (s.id == "aob1/lat_spin/0/-0.01/1" || s.id == "aob1/lat_spin/0/0.01/-1") {
       const ContactForces f = fr->solve(s.in);
@@ -202,7 +203,8 @@ TEST_CASE("deep slip with spin: FaStrip within 2 % of mu Fz for every sign combi
   // sign combinations of (xi, eta, phi), against MIM grid 60 (extrapolated).
   // Before the full-slip trigger (fastrip.hpp, step 4) FaStrip gave up to
   // 54 % of mu Fz here whenever spin opposed the strip traction; measured
-  // now: fastrip 1.32 % max, 0.32 % mean; fastsim 4.04 %; fastsim_kalker 11.9 %.
+  // now: fastrip 0.61 % max, 0.13 % mean (before fastrip.hpp steps 4b and
+  // 4c 1.31 %, 0.32 %); fastsim 4.04 %; fastsim_kalker 11.9 %.
   const auto set = load_reference_set("mim_grid60.csv", "deep_slip");
   REQUIRE(set.size() == 96);
   const auto fr = set_error(*make_tangential_model("fastrip"), set, all);
