@@ -11,96 +11,126 @@ namespace railsim::engine {
 
 namespace {
 
-// cos(x): on treads and flange roots (|x| < 0.25 rad) its Taylor series to
-// x^12 (truncation below 1e-19, so within an ulp or two of std::cos at a
-// fraction of the cost); std::cos beyond.
-inline double cos_angle(double x) {
-  if (std::abs(x) >= 0.25) return std::cos(x);
-  const double x2 = x * x;
-  return 1.0 + x2 * (-1.0 / 2 + x2 * (1.0 / 24 + x2 * (-1.0 / 720 + x2 * (1.0 / 40320 + x2 * (-1.0 / 3628800 +
-                                                                                               x2 / 479001600.0)))));
-}
-
-// Per strip: normal penetration, modulus, its load share W_j and dW_j/dw.
-// Only strips that can carry load (and their neighbours, for the zero
-// crossing of a loaded segment) get the exact penetration: a strip with
-// (w - dphi a_j) - g_j <= 0 is unloaded whatever its angle, and its p_j is
-// left at that upper bound (never read unless a neighbour is loaded, in which
-// case it is made exact). `cos_cache` (optional, NaN where not yet known)
-// keeps cos(delta_j) across calls on the same strips.
+// One wheel's strips as padded columns (one leading and kLanes + 1 trailing
+// entries of an unloaded, unlinked pad: index -1 and n ... n + kLanes):
+// cos(delta_j), gap, normal penetration p_j, Winkler stiffness per half
+// segment k_j = (d/2) E* f_j, 1 where the left / right strip is the profile's
+// neighbour, the load shares W_j, dW_j/dw, and the vertical factor cv_j =
+// cos(delta_j + phi_side) (cd itself when phi_side = 0). Not copyable (the
+// column pointers point into the object).
 struct StripWork {
-  double p[contact::StripSet::kMax];
-  double k[contact::StripSet::kMax];
-  double cd[contact::StripSet::kMax];
-  double W[contact::StripSet::kMax];
-  double dW[contact::StripSet::kMax];
-  bool exact[contact::StripSet::kMax];
+  static constexpr int kLanes = 4;  // strips per group of the share pass
+  static constexpr int kPad = contact::StripSet::kMax + kLanes + 2;
+  alignas(32) double cdb[kPad], gapb[kPad], pb[kPad], kb[kPad], lklb[kPad], lkrb[kPad], Wb[kPad], dWb[kPad],
+      cvb[kPad];
+  double* const cd = cdb + 1;
+  double* const gap = gapb + 1;
+  double* const p = pb + 1;
+  double* const k = kb + 1;
+  double* const lkl = lklb + 1;
+  double* const lkr = lkrb + 1;
+  double* const W = Wb + 1;
+  double* const dW = dWb + 1;
+  const double* cv = cd;
+  StripWork() = default;
+  StripWork(const StripWork&) = delete;
+  StripWork& operator=(const StripWork&) = delete;
 };
 
-void shares(const contact::StripSet& s, int jb, int je, double w, double dphi_side, double Es, double* cos_cache,
-            StripWork& x) {
-  const int n = je;
-  auto make_exact = [&](int j, double u) {
-    const contact::StripPoint q = s[j];
-    double c;
-    if (cos_cache) {
-      if (std::isnan(cos_cache[j])) cos_cache[j] = cos_angle(q.angle);
-      c = cos_cache[j];
-    } else {
-      c = cos_angle(q.angle);
-    }
-    x.cd[j] = c;
-    x.p[j] = u * c - q.gap;
-    x.k[j] = Es * q.f;
-    x.exact[j] = true;
-  };
-  bool any = false;
-  for (int j = jb; j < n; ++j) {
-    const contact::StripPoint q = s[j];
-    const double u = w - dphi_side * q.lateral;
-    x.W[j] = 0.0;
-    x.dW[j] = 0.0;
-    if (u - q.gap > 0.0) {
-      make_exact(j, u);
-      any = true;
-    } else {
-      x.p[j] = u - q.gap;  // upper bound, <= 0
-      x.exact[j] = false;
-    }
+// The columns of strips s (penetrations left to the caller; the pads' set).
+// On x86-64 a second copy for processors with AVX2 (GCC's target_clones, as
+// StripContactTable::strips); no FMA, so both copies round alike.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+__attribute__((target_clones("avx2", "default")))
+#endif
+void strip_columns(const contact::StripSet& s, double Es, double phi_side, StripWork& x) {
+  const int n = s.n;
+  for (int q : {-1, n, n + 1, n + 2, n + 3, n + 4}) {
+    x.cd[q] = 1.0;
+    x.gap[q] = 1.0;
+    x.p[q] = -1.0;
+    x.k[q] = 0.0;
+    x.lkl[q] = x.lkr[q] = 0.0;
+    x.cvb[q + 1] = 0.0;
   }
-  if (!any) return;
-  for (int j = jb; j < n; ++j) {
-    if (x.exact[j]) continue;
-    const bool left = j > jb && x.exact[j - 1] && x.p[j - 1] > 0.0 && s.index[j] == s.index[j - 1] + 1;
-    const bool right = j + 1 < n && x.exact[j + 1] && x.p[j + 1] > 0.0 && s.index[j + 1] == s.index[j] + 1;
-    if (left || right) make_exact(j, w - dphi_side * s.lateral[j]);
+  // cos(delta): on treads and flange roots (|delta| < 0.25 rad) its Taylor
+  // series to delta^12 (truncation below 1e-19, within an ulp or two of
+  // std::cos at a fraction of the cost); std::cos beyond (fixed up below).
+  for (int q = 0; q < n; ++q) {
+    const double x2 = s.angle[q] * s.angle[q];
+    x.cd[q] = 1.0 + x2 * (-1.0 / 2 + x2 * (1.0 / 24 + x2 * (-1.0 / 720 + x2 * (1.0 / 40320 + x2 * (-1.0 / 3628800 +
+                                                                                                   x2 / 479001600.0)))));
+    x.gap[q] = s.gap[q];
+    x.k[q] = 0.5 * s.width * (Es * s.f[q]);
   }
-  const double d = s.width;
-  for (int j = jb; j + 1 < n; ++j) {
-    const double pa = x.p[j], pb = x.p[j + 1];
-    if (!(pa > 0.0 || pb > 0.0)) continue;
-    if (s.index[j + 1] != s.index[j] + 1) continue;  // not neighbours
-    if (pa > 0.0 && pb > 0.0) {  // trapezoid, half to each end
-      x.W[j] += 0.5 * d * x.k[j] * pa;
-      x.W[j + 1] += 0.5 * d * x.k[j + 1] * pb;
-      x.dW[j] += 0.5 * d * x.k[j] * x.cd[j];
-      x.dW[j + 1] += 0.5 * d * x.k[j + 1] * x.cd[j + 1];
-    } else {  // triangle up to the zero crossing, to the loaded end
-      const int e = pa > 0.0 ? j : j + 1;
-      const double pe = x.p[e], po = x.p[e == j ? j + 1 : j];
-      const double c = pe / (pe - po);  // loaded fraction of the segment
-      // load = (c d / 2) k_e p_e; d/dw: c depends on w too.
-      const double ce = x.cd[e], co = x.cd[e == j ? j + 1 : j];
-      const double dc = (ce * (pe - po) - pe * (ce - co)) / ((pe - po) * (pe - po));
-      x.W[e] += 0.5 * c * d * x.k[e] * pe;
-      x.dW[e] += 0.5 * d * x.k[e] * (dc * pe + c * ce);
+  for (int q = 0; q < n; ++q)
+    if (std::abs(s.angle[q]) >= 0.25) x.cd[q] = std::cos(s.angle[q]);
+  for (int q = 0; q + 1 < n; ++q) x.lkr[q] = s.index[q + 1] == s.index[q] + 1 ? 1.0 : 0.0;
+  if (n > 0) x.lkr[n - 1] = 0.0;
+  if (n > 0) x.lkl[0] = 0.0;
+  for (int q = 1; q < n; ++q) x.lkl[q] = x.lkr[q - 1];
+  x.cv = x.cd;
+  if (phi_side != 0.0) {
+    for (int q = 0; q < n; ++q) x.cvb[q + 1] = std::cos(s.angle[q] + phi_side);
+    x.cv = x.cvb + 1;
+  }
+}
+
+// Load shares of the strips in groups of kLanes from q0 up to q1 (a strip's
+// neighbours' penetrations are read; pads and unloaded strips past q1 carry
+// none) and the vertical load sum W_j cv_j with its w-derivative over them.
+// Between neighbouring strips the penetration is linear and integrated up to
+// its zero crossing, half of each segment's load to each end: written per
+// strip, strip q takes from each neighbouring segment the fraction f of its
+// own end load k_q p_q, f = 1 when the neighbour is penetrated too, else the
+// loaded fraction p_q / (p_q - p_nb) (a triangle). No branches: every
+// operation is done unconditionally (and finite) and selected after, so that
+// the group loop vectorises (the file is built with -fno-trapping-math; the
+// columns come as separate restrict pointers, as GCC does not vectorise
+// through the StripWork's own).
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+__attribute__((target_clones("avx2", "default")))
+#endif
+void share_pass(const double* __restrict cp, const double* __restrict cc, const double* __restrict ck,
+                const double* __restrict lkl, const double* __restrict lkr, const double* __restrict cv,
+                double* __restrict W, double* __restrict dW, int q0, int q1, double& V, double& dV) {
+  constexpr int L = StripWork::kLanes;
+  double v[L] = {}, dv[L] = {};
+  for (int g = q0; g < q1; g += L)
+    for (int l = 0; l < L; ++l) {
+      const int q = g + l;
+      const double p = cp[q], c0 = cc[q];
+      const bool loaded = p > 0.0;
+      // One side (neighbour penetration pn, cosine cn, link flag lk): the
+      // fraction f of the segment's end load and its w-derivative df.
+      auto side = [&](double pn, double cn, double lk, double& Ws, double& dWs) __attribute__((always_inline)) {
+        const double D = p - std::min(pn, 0.0);      // p - pn when the neighbour is unloaded, p otherwise
+        const double iD = 1.0 / std::max(D, 1e-30);  // (D >= p > 0 where used)
+        const bool both = pn > 0.0;
+        const double fr = p * iD;
+        const double dfr = (c0 - p * (c0 - cn) * iD) * iD;
+        const double f = both ? 1.0 : fr;
+        const double df = both ? 0.0 : dfr;
+        const double fp = f * p, dfp = df * p + f * c0;
+        const bool on = loaded & (lk != 0.0);
+        Ws = on ? fp : 0.0;
+        dWs = on ? dfp : 0.0;
+      };
+      double Wl, dWl, Wr, dWr;
+      side(cp[q - 1], cc[q - 1], lkl[q], Wl, dWl);
+      side(cp[q + 1], cc[q + 1], lkr[q], Wr, dWr);
+      W[q] = ck[q] * (Wl + Wr);
+      dW[q] = ck[q] * (dWl + dWr);
+      v[l] += W[q] * cv[q];
+      dv[l] += dW[q] * cv[q];
     }
-  }
+  V = (v[0] + v[1]) + (v[2] + v[3]);
+  dV = (dv[0] + dv[1]) + (dv[2] + dv[3]);
 }
 
 // Loads, vertical load and patches from the shares of strips [jb, je).
-void loads_from_shares(const contact::StripSet& s, int jb, int je, const StripWork& x, double phi_side,
-                       StripLoads& out, bool with_patches, PatchShape shape);
+void loads_from_shares(const contact::StripSet& s, int jb, int je, const StripWork& x, StripLoads& out,
+                       bool with_patches, PatchShape shape);
 
 // int_0^d sqrt(g(t)) dt for g linear from g0 to g1 over d, clipped at zero.
 double sqrt_linear_integral(double g0, double g1, double d) {
@@ -149,13 +179,16 @@ void semi_hertz_axes(const contact::StripSet& s, int jb, int je, int j, int e, c
 void strip_loads(const contact::StripSet& s, double w, double dphi_side, double phi_side, double Es, StripLoads& out,
                  bool with_patches, PatchShape shape) {
   StripWork x;
-  shares(s, 0, s.n, w, dphi_side, Es, nullptr, x);
-  loads_from_shares(s, 0, s.n, x, phi_side, out, with_patches, shape);
+  strip_columns(s, Es, phi_side, x);
+  for (int q = 0; q < s.n; ++q) x.p[q] = (w - dphi_side * s.lateral[q]) * x.cd[q] - x.gap[q];
+  double V, dV;
+  share_pass(x.p, x.cd, x.k, x.lkl, x.lkr, x.cv, x.W, x.dW, 0, s.n, V, dV);
+  loads_from_shares(s, 0, s.n, x, out, with_patches, shape);
 }
 
 namespace {
-void loads_from_shares(const contact::StripSet& s, int jb, int je, const StripWork& x, double phi_side,
-                       StripLoads& out, bool with_patches, PatchShape shape) {
+void loads_from_shares(const contact::StripSet& s, int jb, int je, const StripWork& x, StripLoads& out,
+                       bool with_patches, PatchShape shape) {
   out.n = 0;
   out.vertical = 0.0;
   out.dvertical = 0.0;
@@ -179,7 +212,7 @@ void loads_from_shares(const contact::StripSet& s, int jb, int je, const StripWo
       A += W * q.A;
       pmax = std::max(pmax, x.p[e]);
       rw += W * x.cd[e];
-      const double ct = phi_side == 0.0 ? x.cd[e] : std::cos(q.angle + phi_side);
+      const double ct = x.cv[e];
       vert += W * ct;
       dvert += x.dW[e] * ct;
       if (e + 1 < je && s.index[e + 1] == q.index + 1 && x.W[e + 1] > 0.0) ++e;
@@ -227,102 +260,30 @@ void loads_from_shares(const contact::StripSet& s, int jb, int je, const StripWo
 }
 }  // namespace
 
-// On x86-64 a second copy for processors with AVX2 (GCC's target_clones, as
-// StripContactTable::strips): the strip loops below have no branches and run
-// in groups of four strips, one instruction per group there; no FMA, so both
-// copies round alike.
+// (An AVX2 copy as well, for its penetration loop.)
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 __attribute__((target_clones("avx2", "default")))
 #endif
 double strip_approach_for_load(const contact::StripSet& s, double Q, double phi_side, double Es, StripLoads& out,
                                PatchShape shape) {
   // Z(w) is increasing and convex-ish (0 while nothing is loaded); Newton from
-  // a Hertz guess, guarded by bisection on a bracket. Every evaluation fills
-  // the strips' penetrations and load shares (the arithmetic of shares() with
-  // dphi = 0, written per strip without branches: strip q takes from each
-  // neighbouring segment the fraction f of its own end, f = 1 when the
-  // neighbour is penetrated too, else the loaded fraction p_q / (p_q - p_nb)),
-  // so the loads and patches at the solution come from the last evaluation.
-  constexpr int L = 4;  // strips per group
+  // a Hertz guess, guarded by bisection on a bracket. Every evaluation is a
+  // share pass (the loads of strip_loads() with dphi = 0), so the loads and
+  // patches at the solution come from the last evaluation.
   const int n = s.n;
-  // Per strip, with one leading and L + 1 trailing entries of an unloaded,
-  // unlinked pad (index -1 and n ... n + L): cos(delta_j), gap, penetration,
-  // Winkler stiffness per half segment, vertical factor, 1 where the left /
-  // right neighbour is the profile's neighbour, and the shares W, dW/dw.
-  constexpr int kN = contact::StripSet::kMax + L + 2;
-  alignas(32) double ccb[kN], cgb[kN], cpb[kN], ckb[kN], cvb[kN], lklb[kN], lkrb[kN], Wb[kN], dWb[kN];
-  double *cc = ccb + 1, *cg = cgb + 1, *cp = cpb + 1, *ck = ckb + 1, *lkl = lklb + 1, *lkr = lkrb + 1;
-  double *W = Wb + 1, *dW = dWb + 1;
-  for (int q : {-1, n, n + 1, n + 2, n + 3, n + 4}) {
-    cc[q] = 1.0;
-    cg[q] = 1.0;
-    cp[q] = -1.0;
-    ck[q] = 0.0;
-    lkl[q] = lkr[q] = 0.0;
-  }
-  for (int q = 0; q < n; ++q) {  // cos(delta) by the Taylor series of cos_angle(), fixed up beyond 0.25 rad below
-    const double x2 = s.angle[q] * s.angle[q];
-    cc[q] = 1.0 + x2 * (-1.0 / 2 + x2 * (1.0 / 24 + x2 * (-1.0 / 720 + x2 * (1.0 / 40320 + x2 * (-1.0 / 3628800 +
-                                                                                               x2 / 479001600.0)))));
-    cg[q] = s.gap[q];
-    ck[q] = 0.5 * s.width * (Es * s.f[q]);
-  }
-  for (int q = 0; q + 1 < n; ++q) lkr[q] = s.index[q + 1] == s.index[q] + 1 ? 1.0 : 0.0;
-  if (n > 0) lkr[n - 1] = 0.0;
-  lkl[0] = 0.0;
-  for (int q = 1; q < n; ++q) lkl[q] = lkr[q - 1];
+  StripWork x;
+  strip_columns(s, Es, phi_side, x);
+  const double *cc = x.cd, *cg = x.gap;
+  double* cp = x.p;
   double vmin = 1e9;  // vertical approach at which the first strip touches (g_j / cos >= g_j)
-  for (int q = 0; q < n; ++q) {
-    if (std::abs(s.angle[q]) >= 0.25) cc[q] = std::cos(s.angle[q]);
-    vmin = std::min(vmin, cg[q] / cc[q]);
-  }
-  const double* cv = cc;  // vertical factor cos(delta + phi_side)
-  if (phi_side != 0.0) {
-    for (int q = 0; q < n; ++q) cvb[q + 1] = std::cos(s.angle[q] + phi_side);
-    for (int q : {-1, n, n + 1, n + 2, n + 3, n + 4}) cvb[q + 1] = 0.0;
-    cv = cvb + 1;
-  }
-  // Load shares W_j, dW_j/dw over the groups of L strips from q0 (pads and
-  // strips past q1 carry none: unloaded there), and the vertical load with its
-  // derivative at w over strips [q0, q1).
+  for (int q = 0; q < n; ++q) vmin = std::min(vmin, cg[q] / cc[q]);
+  // The shares over strips [q0, q1) (their neighbours' penetrations made first).
   int q0 = 0, q1 = n;
   double w_filled = std::numeric_limits<double>::quiet_NaN();  // the w the shares hold
-  auto vertical = [&](double w, double& V, double& dV) __attribute__((always_inline)) {
+  auto vertical = [&](double w, double& V, double& dV) {
     const int e0 = std::max(0, q0 - 1), e1 = std::min(n, q1 + 1);
     for (int q = e0; q < e1; ++q) cp[q] = w * cc[q] - cg[q];
-    double v[L] = {}, dv[L] = {};
-    for (int g = q0; g < q1; g += L)
-      for (int l = 0; l < L; ++l) {
-        const int q = g + l;
-        const double p = cp[q], c0 = cc[q];
-        const bool loaded = p > 0.0;
-        // One side (neighbour penetration pn, cosine cn, link flag lk): the
-        // fraction f of the segment's end load and its w-derivative df. Every
-        // operation is done unconditionally (and finite) and selected after,
-        // so that the loop has no branch.
-        auto side = [&](double pn, double cn, double lk, double& Ws, double& dWs) __attribute__((always_inline)) {
-          const double D = p - std::min(pn, 0.0);  // p - pn when the neighbour is unloaded, p otherwise
-          const double iD = 1.0 / std::max(D, 1e-30);  // (D >= p > 0 where used)
-          const bool both = pn > 0.0;
-          const double fr = p * iD;
-          const double dfr = (c0 - p * (c0 - cn) * iD) * iD;
-          const double f = both ? 1.0 : fr;
-          const double df = both ? 0.0 : dfr;
-          const double fp = f * p, dfp = df * p + f * c0;
-          const bool on = loaded & (lk != 0.0);
-          Ws = on ? fp : 0.0;
-          dWs = on ? dfp : 0.0;
-        };
-        double Wl, dWl, Wr, dWr;
-        side(cp[q - 1], cc[q - 1], lkl[q], Wl, dWl);
-        side(cp[q + 1], cc[q + 1], lkr[q], Wr, dWr);
-        W[q] = ck[q] * (Wl + Wr);
-        dW[q] = ck[q] * (dWl + dWr);
-        v[l] += W[q] * cv[q];
-        dv[l] += dW[q] * cv[q];
-      }
-    V = (v[0] + v[1]) + (v[2] + v[3]);
-    dV = (dv[0] + dv[1]) + (dv[2] + dv[3]);
+    share_pass(x.p, x.cd, x.k, x.lkl, x.lkr, x.cv, x.W, x.dW, q0, q1, V, dV);
     w_filled = w;
   };
   double lo = vmin, hi = vmin + 1e-4, Vhi = 0.0, dV = 0.0;
@@ -368,14 +329,7 @@ double strip_approach_for_load(const contact::StripSet& s, double Q, double phi_
     double V;
     vertical(w, V, dV);
   }
-  StripWork x;
-  for (int q = std::max(0, q0 - 1); q < std::min(n, q1 + 1); ++q) {
-    x.p[q] = cp[q];
-    x.cd[q] = cc[q];
-    x.W[q] = W[q];
-    x.dW[q] = dW[q];
-  }
-  loads_from_shares(s, q0, q1, x, phi_side, out, true, shape);
+  loads_from_shares(s, q0, q1, x, out, true, shape);
   return w;
 }
 
