@@ -406,9 +406,10 @@ TEST_CASE("profile geometry: patch areas in tread contact against CONTACT, both 
   CHECK(worst[1] < 0.08);
 }
 
-// The lateral model's load-to-approach solve (strip_approach_for_load, one
-// branch-free pass per Newton evaluation that also yields the loads) against
-// the reference pass of strip_loads at the approach it returns, on the
+// The lateral model's load-to-approach solve (strip_approach_for_load: its
+// Newton evaluations run on the strips penetrated at the bracket's top only,
+// and the last one yields the loads) against strip_loads over every strip at
+// the approach it returns: it carries the load asked for (1e-9), on the
 // S1002/UIC60 strips from the tread to the flange (one and two patches), both
 // wheels' sides of the table (y of either sign), with yaw, a rolled vertical
 // direction and both patch shapes: the same patches, loads and ellipses.
