@@ -14,31 +14,12 @@ namespace railsim::contact {
 
 namespace {
 constexpr double kPi = std::numbers::pi;
-
-// Integral of sqrt(r^2 - u^2) from 0 to u (|u| <= r) and of u sqrt(r^2 - u^2)
-// from -r to u. (u / r, not u times a reciprocal: at the trailing end of a
-// nearly full adhesion zone asin's slope is unbounded and a one-ulp change of
-// the argument moved the small-creepage force by 1e-4.)
-inline double seg_area(double u, double r) {
-  const double s = std::sqrt(std::max(0.0, r * r - u * u));
-  return 0.5 * (u * s + r * r * std::asin(std::clamp(u / r, -1.0, 1.0)));
-}
-inline double seg_moment(double u, double r) {
-  const double w = std::max(0.0, r * r - u * u);
-  return w * std::sqrt(w) * (-1.0 / 3.0);
-}
 }  // namespace
 
 Fastrip::Fastrip(const FastripOptions& options)
     : options_(options), grid_(StripGrid::make(options.nx, options.ny, options.spacing_x, options.spacing_y)) {
   const auto nx = static_cast<std::size_t>(grid_.nx);
   sqc_.resize(nx);
-  An_.resize(nx + 1);
-  Bn_.resize(nx + 1);
-  for (std::size_t k = 0; k <= nx; ++k) {
-    An_[k] = seg_area(grid_.X[k], 1.0);
-    Bn_[k] = seg_moment(grid_.X[k], 1.0);
-  }
   double par = 0.0;  // midpoint rule of (1 - X^2) along a strip (continuum 4/3)
   for (std::size_t k = 0; k < nx; ++k) {
     const double X = grid_.Xc[k];
@@ -135,19 +116,24 @@ ContactForces Fastrip::compute(const ContactInput& in, TangentialWorkspace* /*ws
   const double chi_rate = creep_norm > 0.0 ? std::abs(in.creep.phi) / (0.25 * creep_norm) : 0.0;
 
   const auto nx = static_cast<std::size_t>(grid_.nx);
-  const StripSums sums = grid_.sum_strips(a, b, [&](std::size_t j, double y, double aj) {
+  const double* Xc = grid_.Xc.data();
+  const double* step = grid_.step.data();
+  const double* step_mid = grid_.step_mid.data();
+  const double* dX = grid_.dX.data();
+  const double* sqc = sqc_.data();
+  // One strip's constants and march state.
+  struct March {
+    double aj, gj, spy, d, ar2, qs, sgx, pgx, xs;
+    double sx = 0.0, sy = 0.0, qprev = 0.0, fx = 0.0, fy = 0.0, mz = 0.0, adh = 0.0;
+    bool slides = false;  // the strip slides from here on (bound reached, or Carter slip zone)
+  };
+  const auto start = [&](std::size_t j) {
+    const double y = b * grid_.Y[j], aj = a * grid_.t[j];
     const double gj = mu * p0 * grid_.t[j];  // mu p0_j: peak of the strip's bound
-    const double spy = spy_tau / grid_.t[j];  // phi / L3_j
     // Carter solution of the strip (step 2): adhesion centre d, half-length ar.
     const double S = (gj > 0.0) ? W / gj : 1.0;  // Carter's slip measure |w| / (mu p0_j)
-    double d = 0.0, ar = aj;
-    if (W > 0.0) {
-      d = aj * std::min(S, 1.0);
-      ar = aj - d;
-    }
-    const double qs = gj / aj;  // mu p0_j / a_j
-    const double sgx = spx * y;        // longitudinal spin slip rate on this strip (adhesion, L3)
-    const double pgx = ux - upxw * y;  // (xi - phi y_j) / Lu: uniform pull of a sliding strip
+    const double d = W > 0.0 ? aj * std::min(S, 1.0) : 0.0;
+    const double ar = aj - d;
     // The strip slides behind x_s (step 4): Carter's slip point d - a' when
     // spin matters on this strip, nowhere (the trailing edge) without spin,
     // blended by chi = |phi| |(a_j, y_j)| / (0.25 |(xi, eta)|) in [0, 1];
@@ -155,90 +141,93 @@ ContactForces Fastrip::compute(const ContactInput& in, TangentialWorkspace* /*ws
     // (Carter's full slip, S = |w| / (mu p0_j) >= 1), reached at S = 2.
     const double full = std::clamp(S - 1.0, 0.0, 1.0) * spin_weight;
     const double chi = std::max(creep_norm > 0.0 ? std::min(1.0, chi_rate * std::sqrt(aj * aj + y * y)) : 1.0, full);
-    const double xs = chi * (d - ar) - (1.0 - chi) * aj;
-    double sx = 0.0, sy = 0.0, qprev = 0.0;
-    bool slides = false;  // the strip slides from here on (bound reached, or Carter slip zone)
-    double fx = 0.0, fy = 0.0, mz = 0.0, adh = 0.0;
-    // Adhesion-ellipse integrals at the upper boundary of the current element
-    // (the leading edge x = a_j sits at u = +ar); reused element to element.
-    double Aup = 0.25 * kPi * ar * ar, Bup = 0.0;
-    bool in_adhesion = W > 0.0 && ar > 0.0;
-    for (std::size_t kk = 0; kk < nx; ++kk) {
-      const double x = aj * grid_.Xc[kk];
-      const double dx = aj * grid_.step[kk];             // from the previous point
-      const double xmdx = aj * aj * grid_.step_mid[kk];  // the step times its midpoint
-      const double w = aj * grid_.dX[kk];
-      // Strip-theory traction: analytic integral and first moment over the element.
-      double I = 0.0, M = 0.0, q = 0.0;
-      if (W > 0.0) {
-        I = aj * aj * (An_[kk] - An_[kk + 1]);
-        M = aj * aj * aj * (Bn_[kk] - Bn_[kk + 1]);
-        double qa = 0.0;
-        if (in_adhesion) {
-          const double u1 = std::max(aj * grid_.X[kk + 1] - d, -ar);
-          const double Alo = seg_area(u1, ar), Blo = seg_moment(u1, ar);
-          const double dA = Aup - Alo;
-          I -= dA;
-          M -= Bup - Blo + d * dA;
-          Aup = Alo;
-          Bup = Blo;
-          in_adhesion = u1 > -ar;
-          const double v = x - d;
-          qa = std::sqrt(std::max(0.0, ar * ar - v * v));
+    const double xs = W > 0.0 ? chi * (d - ar) - (1.0 - chi) * aj : -aj;
+    return March{aj,
+                 gj,
+                 spy_tau / grid_.t[j],            // phi / L3_j
+                 d,
+                 ar * ar,
+                 W > 0.0 ? gj / aj : 0.0,         // mu p0_j / a_j (no strip-theory traction without creepage)
+                 spx * y,                          // longitudinal spin slip rate on this strip (adhesion, L3)
+                 ux - upxw * y,                    // (xi - phi y_j) / Lu: uniform pull of a sliding strip
+                 xs};
+  };
+  const auto advance = [&](March& m, std::size_t e) {
+    const double aj = m.aj;
+    const double x = aj * Xc[e];
+    const double dx = aj * step[e];             // from the previous point
+    const double w = aj * dX[e];
+    // Carter's strip traction at the element centre (zero without creepage).
+    const double v = x - m.d;
+    const double q = m.qs * (aj * sqc[e] - std::sqrt(std::max(0.0, m.ar2 - v * v)));
+    // Carter's slip zone of the strip's creepage: the strip slides from here
+    // on even if spin keeps the total traction below the bound (step 4).
+    if (x < m.xs) m.slides = true;
+    if (m.slides) {
+      // Sliding strip: no more strip-theory increments (cancelled in s); the
+      // total traction is marched as in FASTSIM (step 4), in kSub substeps,
+      // each returned onto the bound at its end (step 4c).
+      double tx = m.qprev * ex + m.sx, ty = m.qprev * ey + m.sy;
+      const double h = dx * (1.0 / kSub), hx = m.pgx * h, hy = uy * h, hs = m.spy * aj * h;
+      const double* sq = &sub_sq_[e * kSub];
+      const double* xm = &sub_xm_[e * kSub];
+      for (int i = 0; i < kSub; ++i) {
+        tx -= hx;
+        ty -= hy + hs * xm[i];
+        const double gi = m.gj * sq[i];
+        const double t2 = tx * tx + ty * ty;
+        if (t2 > gi * gi) {
+          const double sc = gi / std::sqrt(t2);
+          tx *= sc;
+          ty *= sc;
         }
-        I *= qs;
-        M *= qs;
-        q = qs * (aj * sqc_[kk] - qa);
       }
-      // Carter's slip zone of the strip's creepage: the strip slides from here
-      // on even if spin keeps the total traction below the bound (step 4).
-      if (W > 0.0 && x < xs) slides = true;
-      if (slides) {
-        // Sliding strip: no more strip-theory increments (cancelled in s); the
-        // total traction is marched as in FASTSIM (step 4), in kSub substeps,
-        // each returned onto the bound at its end (step 4c).
-        double tx = qprev * ex + sx, ty = qprev * ey + sy;
-        const double h = dx * (1.0 / kSub), hx = pgx * h, hy = uy * h, hs = spy * aj * h;
-        const double* sq = &sub_sq_[kk * kSub];
-        const double* xm = &sub_xm_[kk * kSub];
-        for (int i = 0; i < kSub; ++i) {
-          tx -= hx;
-          ty -= hy + hs * xm[i];
-          const double gi = gj * sq[i];
-          const double t2 = tx * tx + ty * ty;
-          if (t2 > gi * gi) {
-            const double sc = gi / std::sqrt(t2);
-            tx *= sc;
-            ty *= sc;
-          }
-        }
-        sx = tx - q * ex;
-        sy = ty - q * ey;
-      } else {
-        // Spin, FASTSIM-like (step 4), on top of the strip traction.
-        sx += sgx * dx;
-        sy -= spy * xmdx;
-      }
-      qprev = q;
-      double tx = q * ex + sx, ty = q * ey + sy;
-      const double g = gj * sqc_[kk];
-      const double t2 = tx * tx + ty * ty;
-      if (t2 > g * g * (1.0 + 1e-12)) {
-        const double s = g / std::sqrt(t2);
-        tx *= s;
-        ty *= s;
-        sx = tx - q * ex;
-        sy = ty - q * ey;
-        slides = true;
-      } else if (x >= d - ar) {
-        adh += w;
-      }
-      fx += I * ex + sx * w;
-      fy += I * ey + sy * w;
-      mz += M * ey + x * sy * w;
+      m.sx = tx - q * ex;
+      m.sy = ty - q * ey;
+    } else {
+      // Spin, FASTSIM-like (step 4), on top of the strip traction.
+      m.sx += m.sgx * dx;
+      m.sy -= m.spy * (aj * aj * step_mid[e]);  // the step times its midpoint
     }
-    return StripForces{fx, fy, mz, adh};
-  });
+    m.qprev = q;
+    double tx = q * ex + m.sx, ty = q * ey + m.sy;
+    const double g = m.gj * sqc[e];
+    const double t2 = tx * tx + ty * ty;
+    if (t2 > g * g * (1.0 + 1e-12)) {
+      const double s = g / std::sqrt(t2);
+      tx *= s;
+      ty *= s;
+      m.sx = tx - q * ex;
+      m.sy = ty - q * ey;
+      m.slides = true;
+    } else if (x >= m.d - (aj - m.d)) {  // behind the adhesion zone's trailing end d - a'
+      m.adh += w;
+    }
+    m.fx += m.sx * w;
+    m.fy += m.sy * w;
+    m.mz += x * m.sy * w;
+  };
+  // Step 5: the strip-theory traction's part of the strip force and moment,
+  // integrated exactly over the strip (the sum of its exact integrals over
+  // the elements telescopes): Carter's q = (mu p0_j / a_j)(sqrt(a_j^2 - x^2)
+  // - sqrt(a'^2 - (x - d)^2)) gives (pi/2) mu p0_j / a_j (a_j^2 - a'^2) along
+  // e and the moment -(pi/2) mu p0_j / a_j d a'^2 (a_j^2 - a'^2 = d (2 a_j - d)
+  // without cancellation at small creepage).
+  StripSums sums;
+  const auto finish = [&](std::size_t j, const March& m) {
+    const double force = 0.5 * kPi * m.qs * m.d * (2.0 * m.aj - m.d);
+    const double moment = -0.5 * kPi * m.qs * m.d * m.ar2;
+    sums.add(force * ex + m.fx, force * ey + m.fy, moment * ey + m.mz, b * grid_.Y[j], m.aj, m.adh, b * grid_.dY[j]);
+  };
+  // Strips in groups (for_strip_groups): their marches overlap; summed in strip order.
+  const auto group = [&]<std::size_t N>(std::size_t j0, std::integral_constant<std::size_t, N>) {
+    March m[N];
+    for (std::size_t i = 0; i < N; ++i) m[i] = start(j0 + i);
+    for (std::size_t e = 0; e < nx; ++e)
+      for (std::size_t i = 0; i < N; ++i) advance(m[i], e);
+    for (std::size_t i = 0; i < N; ++i) finish(j0 + i, m[i]);
+  };
+  for_strip_groups(grid_.Y.size(), group);
   return strip_model_result("fastrip", in, sums);
 }
 

@@ -123,7 +123,11 @@
 //    0.001, phi -1.5 (4b with one step: 10.18 %). Cost (callgrind,
 //    bench_contact_models' workload, a/b 1.33, 16 creepage sets, 20 x 20):
 //    91.9k -> 101.1k instructions a call (+10 %); on the spin-heavy
-//    reference set 73.2k -> 100.6k (+37 %, most strips slide there).
+//    reference set 73.2k -> 100.6k (+37 %, most strips slide there). Won
+//    back (issue 15) by step 5's exact strip integral (the arcsine per
+//    element was a fifth of the call) and by marching the strips in groups
+//    of four (for_strip_groups, as FASTSIM): 50.7k instructions a call,
+//    BM_Fastrip/20 10.7 -> 5.1 us (results equal to 1e-15 mu Fz).
 //    (Tried and rejected, measured on tests/data/contact/spin_reference:
 //    the Carter trigger alone with FASTSIM's three flexibilities in the
 //    sliding strip: max 24 % of mu Fz (wide patch, lateral creepage +
@@ -465,9 +469,11 @@
 //    Taken, as steps 4b and 4c: the per-strip flexibility for phi x only
 //    (not for -phi y_j, which as (a) cost the pure-spin mean) with the
 //    substeps: 8.95 / 2.23 %, every check passes (figures below).)
-// 5. Integration: the strip-theory traction is integrated analytically over
-//    each element (force and first moment), the spin correction by the
-//    midpoint rule at element centres; strips by the midpoint rule. The
+// 5. Integration: the strip-theory traction is integrated exactly over each
+//    strip (force and first moment; the sum of its exact element integrals
+//    telescopes to Carter's strip force, so no arcsine per element), the
+//    spin correction and the sliding strips' traction by the midpoint rule at
+//    element centres; strips by the midpoint rule. The
 //    compliances, L3 and the pressure are scaled by constants of the grid
 //    (discretised / continuum moment) so that on ANY grid the small-creepage
 //    slopes for xi, eta, phi (Fy) and the saturated force mu Fz are exact.
@@ -525,8 +531,6 @@ class Fastrip final : public TangentialModel {
   FastripOptions options_;
   StripGrid grid_;
   std::vector<double> sqc_;  // sqrt(1 - X^2) at the element centres
-  std::vector<double> An_;   // 0.5 (X sqrt(1-X^2) + asin X) at the element boundaries
-  std::vector<double> Bn_;   // -(1-X^2)^1.5 / 3 at the element boundaries
   // Grid constants (discretised moment / continuum moment), see step 5:
   double load_scale_ = 1.0;  // pressure factor (4/3) / sum t^2 dY
   double k_scale_ = 1.0;     // sum t dY / (pi/2)                      (xi, eta slopes)

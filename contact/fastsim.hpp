@@ -124,26 +124,7 @@ struct StripGrid {
   // The registry's grid option for a strip model: N gives N x N elements, N in
   // [2, 1000] (InputError naming `model` otherwise); 0 keeps `fallback`.
   static int size_option(const TangentialModelOptions& options, const char* model, int fallback);
-
-  // The strip loop of a strip model on a patch of semi-axes (a, b): for each
-  // strip j at y_j = b Y_j with half-length a_j = a t_j, strip(j, y_j, a_j)
-  // returns its StripForces, and the sums over all strips (widths b dY_j) are
-  // returned (FaStrip; FASTSIM marches strips in groups, for_strip_groups).
-  template <class StripBody>
-  StripSums sum_strips(double a, double b, StripBody&& strip) const;
 };
-
-template <class StripBody>
-StripSums StripGrid::sum_strips(double a, double b, StripBody&& strip) const {
-  StripSums sums;
-  for (std::size_t j = 0; j < Y.size(); ++j) {
-    const double y = b * Y[j];
-    const double aj = a * t[j];
-    const StripForces f = strip(j, y, aj);
-    sums.add(f.fx, f.fy, f.mz, y, aj, f.adh, b * dY[j]);
-  }
-  return sums;
-}
 
 // The strips [0, ny) of a strip model in consecutive groups of N = 1..5
 // strips, group(j0, std::integral_constant<std::size_t, N>{}) for each (fours;
