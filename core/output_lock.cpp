@@ -73,6 +73,14 @@ void claim_for_analysis(const std::string& dir, const std::string& analysis) {
 
 OutputLock::OutputLock(const std::string& dir, const std::string& analysis) {
   std::error_code ec;
+  // The folders this lock creates (the output folder and any missing parent),
+  // innermost first: removed again if the command leaves nothing in them.
+  for (std::filesystem::path p = std::filesystem::absolute(dir, ec); !ec && !p.empty() && !std::filesystem::exists(p, ec);
+       p = p.parent_path()) {
+    created_.push_back(p.string());
+    if (p == p.parent_path()) break;
+  }
+  ec.clear();
   std::filesystem::create_directories(dir, ec);
   if (ec) throw InputError(dir + ": cannot create the output folder (" + ec.message() + ")");
   const std::string path = dir + "/.railsim.lock";
@@ -105,6 +113,23 @@ OutputLock::OutputLock(const std::string& dir, const std::string& analysis) {
 }
 
 OutputLock::~OutputLock() {
+  // A folder this lock created and the command left without results (bad
+  // input found after the lock, say) is removed with its markers, so that a
+  // refused command leaves no trace. Everything else stays as it is.
+  if (fd_ >= 0 && !created_.empty()) {
+    std::error_code ec;
+    bool only_markers = true;
+    for (const auto& e : std::filesystem::directory_iterator(created_.front(), ec)) {
+      const std::string name = e.path().filename().string();
+      if (name != ".railsim.lock" && name != ".railsim.analysis") only_markers = false;
+    }
+    if (!ec && only_markers) {
+      std::filesystem::remove(created_.front() + "/.railsim.analysis", ec);
+      std::filesystem::remove(created_.front() + "/.railsim.lock", ec);
+      for (const auto& d : created_)
+        if (!std::filesystem::remove(d, ec)) break;  // (remove() refuses a folder that is not empty)
+    }
+  }
   if (fd_ >= 0) ::close(fd_);  // closing releases the lock
 }
 

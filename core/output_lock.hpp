@@ -13,9 +13,13 @@
 // (channels.csv: run; bifurcation.csv, ramping.csv, reductions.csv:
 // critical-speed; modes.csv; comparison.csv; yq_comparison.csv), and a
 // summary.json of none of them is refused too.
+// A folder the lock created (with any parent it had to create) that holds
+// nothing but the markers when the lock is released (a command refused after
+// taking it) is removed again.
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace railsim {
 
@@ -31,6 +35,7 @@ class OutputLock {
 
  private:
   int fd_ = -1;
+  std::vector<std::string> created_;  // folders this lock created, innermost first
 };
 
 }  // namespace railsim

@@ -37,8 +37,14 @@ TEST_CASE("an output folder has one writer at a time", "[core][lock]") {
 // would replace the first one's); a folder taken without naming the analysis
 // (or one from before the record) accepts any.
 TEST_CASE("an output folder holds the results of one analysis", "[core][lock]") {
+  // A command that writes a file while it holds the lock (a folder left with
+  // only the markers is removed: see the next test).
+  const auto write_into = [](const std::string& d, const char* analysis) {
+    OutputLock lock(d, analysis);
+    std::ofstream(d + "/result.txt") << "x\n";
+  };
   const std::string dir = test::temp_dir("output_lock_analysis") + "/out";
-  CHECK_NOTHROW(OutputLock(dir, "run"));
+  CHECK_NOTHROW(write_into(dir, "run"));
   CHECK(test::read_text(dir + "/.railsim.analysis") == "run\n");
   CHECK_NOTHROW(OutputLock(dir, "run"));
   CHECK_NOTHROW(OutputLock(dir));
@@ -53,9 +59,39 @@ TEST_CASE("an output folder holds the results of one analysis", "[core][lock]") 
   // Refused, the folder is not left locked.
   CHECK_NOTHROW(OutputLock(dir, "run"));
   const std::string plain = test::temp_dir("output_lock_analysis") + "/plain";
-  CHECK_NOTHROW(OutputLock(plain));
+  CHECK_NOTHROW(write_into(plain, ""));
   CHECK_NOTHROW(OutputLock(plain, "modes"));
   CHECK_THROWS_AS(OutputLock(plain, "run"), InputError);
+}
+
+// A command refused after it took the lock (its input turned out bad) leaves
+// no trace: the folders the lock created, parents included, go again when
+// they hold nothing but the markers; a folder that existed before, or one
+// the command wrote into, stays.
+TEST_CASE("an output folder the lock created and nothing filled is removed", "[core][lock]") {
+  namespace fs = std::filesystem;
+  const std::string base = test::temp_dir("output_lock_cleanup");
+  { OutputLock lock(base + "/a/b/c", "run"); }
+  CHECK_FALSE(fs::exists(base + "/a"));
+  CHECK(fs::exists(base));
+  fs::create_directories(base + "/existing");
+  { OutputLock lock(base + "/existing", "run"); }
+  CHECK(fs::exists(base + "/existing/.railsim.lock"));
+  { OutputLock lock(base + "/existing/sub/out", "run"); }
+  CHECK(fs::exists(base + "/existing"));
+  CHECK_FALSE(fs::exists(base + "/existing/sub"));
+  {
+    OutputLock lock(base + "/x/out", "run");
+    std::ofstream(base + "/x/out/channels.csv") << "time\n";
+  }
+  CHECK(test::read_text(base + "/x/out/channels.csv") == "time\n");
+  CHECK(test::read_text(base + "/x/out/.railsim.analysis") == "run\n");
+  {  // a file beside the output folder keeps the parent
+    OutputLock lock(base + "/y/out", "run");
+    std::ofstream(base + "/y/note.txt") << "mine\n";
+  }
+  CHECK_FALSE(fs::exists(base + "/y/out"));
+  CHECK(test::read_text(base + "/y/note.txt") == "mine\n");
 }
 
 // Folders without the record (written before it existed, or by hand): the
