@@ -152,47 +152,62 @@ ContactForces Fastrip::compute(const ContactInput& in, TangentialWorkspace* /*ws
                  ux - upxw * y,                    // (xi - phi y_j) / Lu: uniform pull of a sliding strip
                  xs};
   };
-  const auto advance = [&](March& m, std::size_t e) {
+  // One element of a strip, in three parts so that a group's sliding strips
+  // take their substeps side by side (the square-root/division chains of
+  // different strips interleaved): the traction at the element's start and
+  // the sliding substeps' increments (or the adhering strip's spin step),
+  // one substep, and the element's end (bound, sums).
+  struct Step {
+    double x, q, tx, ty, hx, hy, hs;
+  };
+  const auto begin_element = [&](March& m, std::size_t e, Step& st) {
     const double aj = m.aj;
-    const double x = aj * Xc[e];
-    const double dx = aj * step[e];             // from the previous point
-    const double w = aj * dX[e];
+    st.x = aj * Xc[e];
+    const double dx = aj * step[e];  // from the previous point
     // Carter's strip traction at the element centre (zero without creepage).
-    const double v = x - m.d;
-    const double q = m.qs * (aj * sqc[e] - std::sqrt(std::max(0.0, m.ar2 - v * v)));
+    const double v = st.x - m.d;
+    st.q = m.qs * (aj * sqc[e] - std::sqrt(std::max(0.0, m.ar2 - v * v)));
     // Carter's slip zone of the strip's creepage: the strip slides from here
     // on even if spin keeps the total traction below the bound (step 4).
-    if (x < m.xs) m.slides = true;
+    if (st.x < m.xs) m.slides = true;
     if (m.slides) {
       // Sliding strip: no more strip-theory increments (cancelled in s); the
       // total traction is marched as in FASTSIM (step 4), in kSub substeps,
       // each returned onto the bound at its end (step 4c).
-      double tx = m.qprev * ex + m.sx, ty = m.qprev * ey + m.sy;
-      const double h = dx * (1.0 / kSub), hx = m.pgx * h, hy = uy * h, hs = m.spy * aj * h;
-      const double* sq = &sub_sq_[e * kSub];
-      const double* xm = &sub_xm_[e * kSub];
-      for (int i = 0; i < kSub; ++i) {
-        tx -= hx;
-        ty -= hy + hs * xm[i];
-        const double gi = m.gj * sq[i];
-        const double t2 = tx * tx + ty * ty;
-        if (t2 > gi * gi) {
-          const double sc = gi / std::sqrt(t2);
-          tx *= sc;
-          ty *= sc;
-        }
-      }
-      m.sx = tx - q * ex;
-      m.sy = ty - q * ey;
+      st.tx = m.qprev * ex + m.sx;
+      st.ty = m.qprev * ey + m.sy;
+      const double h = dx * (1.0 / kSub);
+      st.hx = m.pgx * h;
+      st.hy = uy * h;
+      st.hs = m.spy * aj * h;
     } else {
       // Spin, FASTSIM-like (step 4), on top of the strip traction.
       m.sx += m.sgx * dx;
       m.sy -= m.spy * (aj * aj * step_mid[e]);  // the step times its midpoint
     }
+  };
+  const auto substep = [&](const March& m, std::size_t e, int i, Step& st) {
+    st.tx -= st.hx;
+    st.ty -= st.hy + st.hs * sub_xm_[e * kSub + i];
+    const double gi = m.gj * sub_sq_[e * kSub + i];
+    const double t2 = st.tx * st.tx + st.ty * st.ty;
+    if (t2 > gi * gi) {
+      const double sc = gi / std::sqrt(t2);
+      st.tx *= sc;
+      st.ty *= sc;
+    }
+  };
+  const auto end_element = [&](March& m, std::size_t e, const Step& st) {
+    const double q = st.q, x = st.x;
+    if (m.slides) {
+      m.sx = st.tx - q * ex;
+      m.sy = st.ty - q * ey;
+    }
     m.qprev = q;
     double tx = q * ex + m.sx, ty = q * ey + m.sy;
     const double g = m.gj * sqc[e];
     const double t2 = tx * tx + ty * ty;
+    const double w = m.aj * dX[e];
     if (t2 > g * g * (1.0 + 1e-12)) {
       const double s = g / std::sqrt(t2);
       tx *= s;
@@ -200,7 +215,7 @@ ContactForces Fastrip::compute(const ContactInput& in, TangentialWorkspace* /*ws
       m.sx = tx - q * ex;
       m.sy = ty - q * ey;
       m.slides = true;
-    } else if (x >= m.d - (aj - m.d)) {  // behind the adhesion zone's trailing end d - a'
+    } else if (x >= m.d - (m.aj - m.d)) {  // behind the adhesion zone's trailing end d - a'
       m.adh += w;
     }
     m.fx += m.sx * w;
@@ -223,8 +238,19 @@ ContactForces Fastrip::compute(const ContactInput& in, TangentialWorkspace* /*ws
   const auto group = [&]<std::size_t N>(std::size_t j0, std::integral_constant<std::size_t, N>) {
     March m[N];
     for (std::size_t i = 0; i < N; ++i) m[i] = start(j0 + i);
-    for (std::size_t e = 0; e < nx; ++e)
-      for (std::size_t i = 0; i < N; ++i) advance(m[i], e);
+    Step st[N];
+    for (std::size_t e = 0; e < nx; ++e) {
+      bool any = false;
+      for (std::size_t i = 0; i < N; ++i) {
+        begin_element(m[i], e, st[i]);
+        any = any || m[i].slides;
+      }
+      if (any)
+        for (int k2 = 0; k2 < kSub; ++k2)
+          for (std::size_t i = 0; i < N; ++i)
+            if (m[i].slides) substep(m[i], e, k2, st[i]);
+      for (std::size_t i = 0; i < N; ++i) end_element(m[i], e, st[i]);
+    }
     for (std::size_t i = 0; i < N; ++i) finish(j0 + i, m[i]);
   };
   for_strip_groups(grid_.Y.size(), group);

@@ -127,11 +127,13 @@
 //    back (issue 15) by step 5's exact strip integral (the arcsine per
 //    element was a fifth of the call) and by marching the strips in groups
 //    of four (for_strip_groups, as FASTSIM): 50.7k instructions a call,
-//    BM_Fastrip/20 10.7 -> 5.1 us (results equal to 1e-15 mu Fz); on the
-//    contact audit's 200 states of the coach (mostly sliding flange and
-//    tread patches) 15.3 -> 8.8-9.3 us. (A branch-free form that marches
-//    all strips of a group through the substeps and selects after: 10.7 us
-//    there, as GCC 12 does not vectorise it; not taken.)
+//    BM_Fastrip/20 10.3 -> 4.8 us (results equal to 1e-15 mu Fz), with a
+//    group's sliding strips taking each substep side by side (their
+//    square-root/division chains interleaved: 5.1 -> 4.8 us; on the contact
+//    audit's 200 states of the coach, mostly sliding flange and tread
+//    patches, 15.3 -> 6.2 us, 6.7-7.1 with each strip's four substeps in a
+//    row). (A branch-free form that marches all strips of a group through the
+//    substeps and selects after: slower, as GCC 12 does not vectorise it.)
 //    (Tried and rejected, measured on tests/data/contact/spin_reference:
 //    the Carter trigger alone with FASTSIM's three flexibilities in the
 //    sliding strip: max 24 % of mu Fz (wide patch, lateral creepage +
