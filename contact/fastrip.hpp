@@ -126,7 +126,7 @@
 //    reference set 73.2k -> 100.6k (+37 %, most strips slide there). Won
 //    back (issue 15) by step 5's exact strip integral (the arcsine per
 //    element was a fifth of the call) and by marching the strips in groups
-//    of four (for_strip_groups, as FASTSIM): 50.7k instructions a call,
+//    of four (for_strip_groups, as FASTSIM): 56k instructions a call,
 //    BM_Fastrip/20 10.3 -> 4.8 us (results equal to 1e-15 mu Fz), with a
 //    group's sliding strips taking each substep side by side (their
 //    square-root/division chains interleaved: 5.1 -> 4.8 us; on the contact
