@@ -254,9 +254,10 @@ TEST_CASE("wheelset-contact: a wheel past its flange's steepest point is flagged
 // A patch the tangential model solves outside its validity domain is flagged
 // (the forces' own valid flag): a warning naming the position, the wheel and
 // the model's reason, and 0 in the patch's CSV column `valid`. mim_table at
-// 1 N in flange contact (a/b 385, beyond the table: the value held at the
-// edge gave 0.21 N of Fx on the right wheel against MIM's 0.024 N) and CHOPAYA's large
-// spin on the flange were written without a word.
+// 1 N per wheel, y 8 mm, yaw 10 mrad, strip 2 mm (patches of a/b 385 and 27,
+// beyond the table: the values held at its edge gave the right wheel 0.21 N
+// of Fx against MIM's 0.024 N) and CHOPAYA's large spin on the flange were
+// written without a word.
 TEST_CASE("wheelset-contact: a patch outside the model's validity domain is flagged", "[engine][analysis][contact]") {
   engine::WheelsetContactSetup s;
   s.track.inclination = std::atan(1.0 / 40.0);
