@@ -9,6 +9,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/support_geometry.hpp"
+#include "cli/support_option_checks.hpp"
 #include "results/csv_writer.hpp"
 
 namespace railsim::cli {
@@ -21,6 +22,7 @@ void register_geometry(CLI::App& app, CommandRunner& run) {
   cmd->add_option("--out", *out, "Output CSV file")->required();
   cmd->callback([&run, o, out] {
     run = [o, out] {
+      check_out_is_no_input(*out, {o->wheel, o->rail});
       const GeometrySetup g = make_geometry(*o);
       const contact::ContactTable t = make_table(*o, g);
       results::CsvWriter w(*out, contact::ContactTable::column_names(), false, 0, 10);

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/support_option_checks.hpp"
 #include "config/yaml_input.hpp"
 #include "core/errors.hpp"
 #include "engine/analysis/track_sampling.hpp"
@@ -37,6 +38,7 @@ struct TrackOptions {
 
 int run_track(const TrackOptions& o) {
   using config::format_number;
+  check_out_is_not_input(o.out, o.track_file);
   const track::Track track = track::load_track(o.track_file);
   const double s0 = o.from.value_or(0.0);
   const double s1 = o.to.value_or(track.length());

@@ -5,7 +5,8 @@
 // wheel on its rail in railsim's track frame and, per contact patch, its
 // positions on wheel and rail, rolling radius, contact angle (track frame:
 // a left flange > 0, a right flange < 0, as `railsim geometry`), semi-axes,
-// normal load and creepages. CASES.yaml:
+// normal load, creepages, forces and the model's validity flag (0: outside
+// its domain, with a warning naming the position and the reason). CASES.yaml:
 //   wheel: S1002            # profile file (relative to CASES.yaml) or shipped name
 //   rail: UIC60
 //   inclination: 1/40       # 0 when the rail file is already inclined
@@ -77,6 +78,7 @@ int run_wheelset_contact(const WheelsetContactArgs& a) {
   };
   s.wheel = profile("wheel", s.wheel);
   s.rail = profile("rail", s.rail);
+  check_out_is_no_input(a.out, {s.wheel, s.rail});  // a profile file of the cases: not the result file
   s.track = engine::read_track_setup(root, "nominal_radius");
   if (auto m = root.find("material")) {
     m->allow_only({"E", "G", "nu", "mu"});
@@ -136,7 +138,7 @@ int run_wheelset_contact(const WheelsetContactArgs& a) {
   for (const char* w : {"left", "right"})
     for (const char* f : {"Fx", "Fy", "Fz", "patches", "climbing"}) cols.push_back(std::string(w) + "_" + f);
   const char* fields[] = {"N", "y_wheel", "y_rail", "y_track", "x_track", "rolling_radius", "contact_angle",
-                          "a", "b", "xi", "eta", "spin", "Fx_patch", "Fy_patch"};
+                          "a", "b", "xi", "eta", "spin", "Fx_patch", "Fy_patch", "valid"};
   for (const char* w : {"left", "right"})
     for (int k = 1; k <= patch_columns; ++k)
       for (const char* f : fields) cols.push_back(std::string(w) + std::to_string(k) + "_" + f);
@@ -152,6 +154,7 @@ int run_wheelset_contact(const WheelsetContactArgs& a) {
           for (double v : {p.N, p.y_wheel, p.y_rail, p.y_track, p.x_track, p.rolling_radius, p.contact_angle, p.a, p.b,
                            p.creep.xi, p.creep.eta, p.creep.phi, p.forces.Fx, p.forces.Fy})
             csv.cell(v);
+          csv.cell(long(p.forces.valid));  // 0: outside the model's validity domain (and a warning)
         } else {
           for (std::size_t f = 0; f < std::size(fields); ++f) csv.cell(std::nan(""));
         }

@@ -147,4 +147,11 @@ void check_out_is_not_input(const std::string& out, const std::string& input) {
                      " itself; writing the results would overwrite it: give another result file");
 }
 
+void check_out_is_no_input(const std::string& out, std::initializer_list<std::string> inputs) {
+  std::error_code ec;
+  if (out.empty()) return;
+  for (const std::string& input : inputs)
+    if (!input.empty() && std::filesystem::is_regular_file(input, ec)) check_out_is_not_input(out, input);
+}
+
 }  // namespace railsim::cli

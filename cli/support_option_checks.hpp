@@ -7,6 +7,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <initializer_list>
 #include <string>
 
 #include "contact/registry.hpp"
@@ -44,6 +45,10 @@ void check_model_reads_options(const contact::TangentialModelEntry& model, const
 // file `out` and the input file `input` are the same file (it would be
 // overwritten before or while it is read).
 void check_out_is_not_input(const std::string& out, const std::string& input);
+// The same for every input that names an existing file (profiles, tables,
+// track files: `railsim geometry --wheel w.csv --out w.csv` overwrote the
+// wheel profile); a shipped name (S1002) or an empty option is no file.
+void check_out_is_no_input(const std::string& out, std::initializer_list<std::string> inputs);
 
 // "run, critical-speed, ..." in registration order.
 std::string subcommand_names(const CLI::App& app);

@@ -70,11 +70,14 @@ ReductionSpec parse_layer(const std::string& t, const std::string& where) {
   const std::string body = trim(t.substr(t.find(':') + 1));
   const std::string help = " (expected layer:h=<thickness m>,G3=<shear modulus Pa>[,tau_c=<limiting shear stress Pa>], "
                            "e.g. layer:h=125e-6,G3=820e6)";
-  bool have_h = false, have_g = false;
+  bool have_h = false, have_g = false, have_tau = false;
   for (const std::string& item : split(body, ',')) {
     const auto eq = item.find('=');
     if (eq == std::string::npos) throw InputError(where + ": layer parameter '" + item + "' has no value" + help);
     const std::string key = trim(item.substr(0, eq));
+    // Each once, as every key of the input files (h=1e-5,G3=1e9,h=2e-5 took the last h without a word).
+    if ((key == "h" && have_h) || (key == "G3" && have_g) || (key == "tau_c" && have_tau))
+      throw InputError(where + ": layer parameter '" + key + "' given twice; give each once" + help);
     double v = 0.0;
     if (!parse_double(item.substr(eq + 1), v))
       throw InputError(where + ": layer parameter '" + key + "': cannot read '" + trim(item.substr(eq + 1)) + "'" +
@@ -94,6 +97,7 @@ ReductionSpec parse_layer(const std::string& t, const std::string& where) {
         throw InputError(where + ": layer limiting shear stress tau_c expected in (0, 1e11] Pa (got " +
                          number_text(v) + ")");
       s.layer.tau_limit = v;
+      have_tau = true;
     } else {
       throw InputError(where + ": unknown layer parameter '" + key + "'" + help);
     }

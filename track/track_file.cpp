@@ -96,6 +96,9 @@ SegmentSpec parse_segment(const InputNode& n, const std::string& label) {
   return s;
 }
 
+// Largest |x|, |y| of the track's start pose [m] (10,000 km).
+constexpr double kMaxStartCoordinate = 1e7;
+
 // Steepest cant ramp accepted along a clothoid [m/m].
 constexpr double kMaxCantGradient = 0.02;
 
@@ -186,9 +189,11 @@ Track load_track(const InputNode& root, const std::string& base_dir, const std::
   Pose start;
   if (auto st = root.find("start")) {
     st->allow_only({"x", "y", "heading_deg"});
-    start.x = st->number_or("x", 0.0);
-    start.y = st->number_or("y", 0.0);
-    start.heading = st->number_or("heading_deg", 0.0) * kPi / 180.0;
+    // Within 10,000 km and one turn either way: x = 1e300 m wrote x = 1e300 on every row (the
+    // track's metres lost in the rounding) and heading_deg = 1e20 an arbitrary direction, exit 0.
+    start.x = st->has("x") ? st->in_range("x", -kMaxStartCoordinate, kMaxStartCoordinate) : 0.0;
+    start.y = st->has("y") ? st->in_range("y", -kMaxStartCoordinate, kMaxStartCoordinate) : 0.0;
+    start.heading = (st->has("heading_deg") ? st->in_range("heading_deg", -360.0, 360.0) : 0.0) * kPi / 180.0;
   }
   Alignment alignment(build_segments(root.at("segments"), root.file()), rail_spacing, start);
 

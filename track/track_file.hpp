@@ -4,7 +4,7 @@
 //   description: "..."              # optional
 //   rail_spacing: 1.5               # 2b [m], distance of the rail centres (cant angle)
 //   gauge: 1.435                    # nominal gauge [m]
-//   start: {x: 0, y: 0, heading_deg: 0}   # optional pose at s = 0
+//   start: {x: 0, y: 0, heading_deg: 0}   # optional pose at s = 0 (|x|, |y| <= 1e7 m, |heading| <= 360 deg)
 //   segments:
 //     - {type: straight, length: 50}
 //     - {type: clothoid, length: 30, shape: linear}      # linear | bloss | cosine

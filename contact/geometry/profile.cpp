@@ -334,11 +334,12 @@ Profile read_profile(const std::string& path_or_name, ProfileKind kind, const Pr
     raw.unit = options.unit;
     raw.unit_from = "the unit option";
   }
+  // No points first: an empty file was refused for its unknown length unit.
+  if (raw.y.empty()) fail(path, std::string("no profile points found in the ") + kind_name(kind) + " profile");
   if (raw.unit == 0.0)
     fail(path, "length unit unknown: name the columns y_mm,z_mm or y_m,z_m, add a '# units: mm' line, or give the unit option");
   if (options.z_up) raw.mirror_z = !raw.mirror_z;
   if (options.mirror_y) raw.mirror_y = !raw.mirror_y;
-  if (raw.y.empty()) fail(path, std::string("no profile points found in the ") + kind_name(kind) + " profile");
   for (std::size_t i = 0; i < raw.y.size(); ++i) {
     raw.y[i] *= raw.unit * (raw.mirror_y ? -1.0 : 1.0);
     raw.z[i] *= raw.unit * (raw.mirror_z ? -1.0 : 1.0);

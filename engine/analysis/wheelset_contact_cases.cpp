@@ -110,6 +110,19 @@ std::vector<WheelsetContactResult> wheelset_contact(const WheelsetContactSetup& 
                                num(y_steepest * 1e3) + " mm, zero yaw), it touches at " + num(flange / kDeg) +
                                " deg (Nadal's limit falls with the angle: a running wheelset derails here)");
         }
+        // A patch the tangential model solved outside its validity domain (the
+        // model's own flag: mim_table's a/b held at the table's edge, MIM not
+        // converged, large spin for CHOPAYA, ...): its forces may be far off.
+        std::string flagged;
+        for (std::size_t j = 0; j < r.wheel[i].patches.size(); ++j) {
+          const WheelsetContactPatch& P = r.wheel[i].patches[j];
+          if (P.forces.valid) continue;
+          flagged += std::string(flagged.empty() ? "" : "; ") + "patch " + std::to_string(j + 1) + " (N = " +
+                     num(P.N) + " N, a/b = " + num(P.b > 0.0 ? P.a / P.b : NAN) + "): " + P.forces.reason;
+        }
+        if (!flagged.empty())
+          r.warnings.push_back(where_of(positions, k) + ": the " + (i == 0 ? "left" : "right") + " wheel's forces " +
+                               "are outside the validity domain of model " + s.model + ": " + flagged);
       }
     } catch (const InputError& e) {  // a position outside what the geometry can solve (e.g. on the flange tip)
       throw InputError(where_of(positions, k) + ": " + e.what());

@@ -22,7 +22,10 @@
 //     torque on the axle;
 //  4. the forces of the wheel on the rail, summed over the patches, in
 //     railsim's track frame (x forward, y left, z up);
-//  5. a wheel shifted past its flange's steepest point (the largest contact
+//  5. a patch the tangential model flags as outside its validity domain
+//     (contact::ContactForces::valid) gives a warning naming the position,
+//     the wheel, the patch and the model's reason;
+//  6. a wheel shifted past its flange's steepest point (the largest contact
 //     angle of the rigid contact over the shift at zero yaw, found once per
 //     set-up) that touches at a flatter flange angle is flagged as climbing,
 //     with a warning: the pose is one a running wheelset does not keep.
@@ -81,7 +84,7 @@ struct WheelsetContactPatch {
   double contact_angle = 0.0;     // [rad], railsim's sign (left wheel flange > 0, right wheel flange < 0)
   double a = 0.0, b = 0.0;        // equivalent ellipse semi-axes [m]
   contact::Creepages creep;       // xi, eta, phi [-, -, 1/m]
-  contact::ContactForces forces;  // of the rail on the wheel, contact frame
+  contact::ContactForces forces;  // of the rail on the wheel, contact frame (valid, reason: the model's flag)
 };
 
 struct WheelsetContactWheel {
@@ -100,7 +103,8 @@ struct WheelsetContactResult {
   double roll = 0.0;   // roll used [rad]
   double omega = 0.0;  // rolling speed used [rad/s] (given, V / r0, or the free axle's)
   WheelsetContactWheel wheel[2];  // left, right
-  std::vector<std::string> warnings;  // e.g. a wheel climbing its flange, naming the position
+  // e.g. a wheel climbing its flange, a patch outside the model's validity domain, naming the position
+  std::vector<std::string> warnings;
 };
 
 // Throws InputError for bad set-ups (naming `where`, the key and, when the

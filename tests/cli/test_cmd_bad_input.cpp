@@ -189,6 +189,45 @@ TEST_CASE("railsim contact on bad case files: exit 2 naming file, line, key and 
   CHECK(r.output.find("usual range 0.05-0.6") != std::string::npos);
 }
 
+// --out naming one of the command's input files: refused before anything is
+// written, the file left as it was (geometry, conicity and wheelset-contact
+// overwrote a wheel profile or table given as the result file, track its track file).
+TEST_CASE("railsim --out naming an input file (profile, table, track): exit 2, the file untouched",
+          "[cli][bad_input]") {
+  const std::string dir = test::temp_dir("bad_input_out_is_input");
+  auto copy = [&](const std::string& from, const std::string& name) {
+    const std::string to = dir + "/" + name;
+    std::ofstream(to) << test::read_text(from);
+    return to;
+  };
+  const std::string wheel = copy(test::data_path("contact_geometry/s1002_netter.csv"), "wheel.csv");
+  const std::string table = copy(test::source_path("vehicles/contact_tables/RSGEO_S1002_UIC60_1in40.dat"), "t.dat");
+  const std::string track = copy(test::source_path("tracks/curve_R300.yaml"), "track.yaml");
+  const std::string cases = dir + "/cases.yaml";
+  std::ofstream(cases) << "wheel: wheel.csv\nrail: UIC60\ninclination: 1/40\nspeed: 20\n"
+                          "positions:\n  - {y: 0.003, Fz: 6e4}\n";
+  struct Case {
+    std::string args, file;
+  };
+  for (const Case& c : {Case{"geometry --no-cache --wheel '" + wheel + "' --out '" + wheel + "'", wheel},
+                        Case{"conicity --no-cache --wheel '" + wheel + "' --out '" + wheel + "'", wheel},
+                        Case{"conicity --table '" + table + "' --out '" + table + "'", table},
+                        Case{"track '" + track + "' --out '" + track + "'", track},
+                        Case{"wheelset-contact '" + cases + "' --out '" + wheel + "'", wheel}}) {
+    const std::string before = test::read_text(c.file);
+    const auto r = test::run_railsim(c.args);
+    INFO(c.args << "\n" << r.output);
+    CHECK(r.exit_code == 2);
+    CHECK(r.output.find("--out: ") != std::string::npos);
+    CHECK(r.output.find("is the input file") != std::string::npos);
+    CHECK(test::read_text(c.file) == before);
+  }
+  // A shipped profile name is no file: an output of that name is fine.
+  const auto r = test::run_railsim("geometry --no-cache --wheel S1002 --out '" + dir + "/S1002'");
+  INFO(r.output);
+  CHECK(r.exit_code == 0);
+}
+
 TEST_CASE("railsim on bad options: exit 2 naming the option and the range", "[cli][bad_input]") {
   const std::string sc = "'" + test::source_path("scenarios/single_wheelset.yaml") + "'";
   const std::string dir = test::temp_dir("bad_input_options");

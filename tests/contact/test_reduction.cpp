@@ -57,6 +57,9 @@ TEST_CASE("a third-body layer is parsed with its parameters and needs a patch", 
   bad("layer:h=1e-4,G3=8e8,depth=3", "unknown layer parameter 'depth'");
   bad("layer:h=1e-4,G3", "has no value");
   bad("layer:h=abc,G3=8e8", "cannot read 'abc'");
+  bad("layer:h=1e-5,G3=1e9,h=2e-5", "layer parameter 'h' given twice");
+  bad("layer:h=1e-5,G3=1e9,G3=2e9", "layer parameter 'G3' given twice");
+  bad("layer:h=1e-5,G3=1e9,tau_c=3e8,tau_c=1e8", "layer parameter 'tau_c' given twice");
 }
 
 TEST_CASE("reduction lists: commas, brackets, layers and semicolons", "[reduction]") {

@@ -121,6 +121,15 @@ TEST_CASE("malformed track files name the segment and the key", "[tracks][track_
   CHECK_THAT(error_of("rail_spacing: 1.2\nsegments:\n  - {type: straight, length: 50}\n"),
              Catch::Contains("t.yaml:1: key 'rail_spacing': gauge 1.435 m is not smaller than rail_spacing 1.2 m"));
   CHECK(error_of("gauge: 1.676\nrail_spacing: 1.75\nsegments:\n  - {type: straight, length: 50}\n") == "no error");
+  // The start pose: within 1e7 m and one turn (x = 1e300 wrote x = 1e300 on every row, the metres lost).
+  CHECK_THAT(error_of("start: {x: 1e300}\nsegments:\n  - {type: straight, length: 50}\n"),
+             Catch::Contains("t.yaml:1: key 'start.x': expected a number in [-10000000, 10000000]"));
+  CHECK_THAT(error_of("start: {y: -2e7}\nsegments:\n  - {type: straight, length: 50}\n"),
+             Catch::Contains("key 'start.y'"));
+  CHECK_THAT(error_of("start: {heading_deg: 1e20}\nsegments:\n  - {type: straight, length: 50}\n"),
+             Catch::Contains("key 'start.heading_deg': expected a number in [-360, 360]"));
+  CHECK(error_of("start: {x: -1e7, y: 1e7, heading_deg: -360}\nsegments:\n  - {type: straight, length: 50}\n") ==
+        "no error");
   // Irregularities.
   CHECK_THAT(error_of(std::string(kCurve) + "irregularities:\n  - {type: bump, start: 3}\n"),
              Catch::Contains("irregularities[0] (bump): key 'type': unknown irregularity type 'bump'") &&

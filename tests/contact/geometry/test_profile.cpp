@@ -74,6 +74,13 @@ TEST_CASE("Bad profiles give InputError with file and line", "[geometry][profile
   CHECK_THAT(msg("too_short.csv"), Catch::Contains("too short"));
   CHECK_THAT(msg("no_units.csv"), Catch::Contains("length unit unknown"));
   CHECK_THAT(msg("missing_file.csv"), Catch::Contains("cannot open"));
+  // An empty file or one with only a header has no points (it was "length unit unknown").
+  const std::string dir = test::temp_dir("profile_empty");
+  std::ofstream(dir + "/empty.csv").close();
+  std::ofstream(dir + "/header_only.csv") << "y,z\n";
+  for (const char* f : {"/empty.csv", "/header_only.csv"})
+    CHECK_THROWS_WITH(read_profile(dir + f, ProfileKind::wheel),
+                      Catch::Contains(f) && Catch::Contains("no profile points found in the wheel profile"));
   CHECK_THROWS_AS(read_profile("S1002", ProfileKind::rail), InputError);
   // The unit option fixes the missing unit.
   ProfileReadOptions o;

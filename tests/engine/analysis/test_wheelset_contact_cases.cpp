@@ -251,6 +251,56 @@ TEST_CASE("wheelset-contact: a wheel past its flange's steepest point is flagged
   }
 }
 
+// A patch the tangential model solves outside its validity domain is flagged
+// (the forces' own valid flag): a warning naming the position, the wheel and
+// the model's reason, and 0 in the patch's CSV column `valid`. mim_table at
+// 1 N per wheel, y 8 mm, yaw 10 mrad, strip 2 mm (patches of a/b 385 and 27,
+// beyond the table: the values held at its edge gave the right wheel 0.21 N
+// of Fx against MIM's 0.024 N) and CHOPAYA's large spin on the flange were
+// written without a word.
+TEST_CASE("wheelset-contact: a patch outside the model's validity domain is flagged", "[engine][analysis][contact]") {
+  engine::WheelsetContactSetup s;
+  s.track.inclination = std::atan(1.0 / 40.0);
+  s.speed = 20.0;
+  s.model = "chopaya";
+  engine::WheelsetContactPosition p;
+  p.y = 0.008;  // the left wheel on its flange: spin far beyond CHOPAYA's domain
+  p.yaw = 0.01;
+  p.Fz = 6.0e4;
+  p.where = "case 0";
+  const auto r = engine::wheelset_contact(s, {p})[0];
+  bool flagged = false;
+  for (const auto& P : r.wheel[0].patches) flagged = flagged || !P.forces.valid;
+  REQUIRE(flagged);
+  std::string found;
+  for (const auto& w : r.warnings)
+    if (w.find("validity domain") != std::string::npos) found = w;
+  INFO(found);
+  CHECK(found.find("case 0: the left wheel's forces are outside the validity domain of model chopaya: patch 1") == 0);
+  CHECK(found.find("large spin") != std::string::npos);
+  // FASTSIM has no such limit: only the climbing warning.
+  s.model = "fastsim";
+  const auto f = engine::wheelset_contact(s, {p})[0];
+  for (const auto& w : f.warnings) CHECK(w.find("validity domain") == std::string::npos);
+  // The program writes the flag per patch and prints the warning.
+  const std::string dir = test::temp_dir("wheelset_contact_validity");
+  const std::string cases = dir + "/flange.yaml";
+  std::ofstream(cases) << "wheel: S1002\nrail: UIC60\ninclination: 1/40\nspeed: 20\npositions:\n"
+                          "  - {y: 0.008, yaw: 0.01, Fz: 6e4}\n  - {y: 0.001, Fz: 6e4}\n";
+  const auto run = test::run_railsim("wheelset-contact " + cases + " --model chopaya --out " + dir + "/f.csv");
+  INFO(run.output);
+  REQUIRE(run.exit_code == 0);
+  CHECK(run.output.find("flange.yaml:6: key 'positions[0]': the left wheel's forces are outside the validity domain "
+                        "of model chopaya") != std::string::npos);
+  CHECK(run.output.find("positions[1]': the left wheel's forces") == std::string::npos);
+  const auto csv = results::read_csv(dir + "/f.csv");
+  REQUIRE(csv.rows.size() == 2);
+  CHECK(csv.number(0, "left1_valid") == 0.0);
+  CHECK(csv.number(0, "right1_valid") == 1.0);
+  CHECK(csv.number(1, "left1_valid") == 1.0);
+  CHECK(std::isnan(csv.number(1, "left3_valid")));  // no third patch
+}
+
 TEST_CASE("wheelset-contact: bad cases exit 2 naming the key", "[engine][analysis][contact]") {
   const std::string dir = test::temp_dir("wheelset_contact_bad");
   auto write = [&](const std::string& name, const std::string& text) {
