@@ -41,7 +41,7 @@ void register_conicity(CLI::App& app, CommandRunner& run) {
                               "--y-step", "--cache-dir", "--no-cache"})
         if (misplaced.empty() && cmd->count(opt) > 0) misplaced = opt;
     run = [o, out, table, misplaced] {
-      check_out_is_no_input(*out, {o->wheel, o->rail, *table});
+      check_out_against_inputs(*out, {o->wheel, o->rail, *table});
       if (!misplaced.empty())
         throw InputError(misplaced + ": does not apply with --table (the table file holds its own geometry and "
                                      "shift grid)");

@@ -22,7 +22,7 @@ void register_geometry(CLI::App& app, CommandRunner& run) {
   cmd->add_option("--out", *out, "Output CSV file")->required();
   cmd->callback([&run, o, out] {
     run = [o, out] {
-      check_out_is_no_input(*out, {o->wheel, o->rail});
+      check_out_against_inputs(*out, {o->wheel, o->rail});
       const GeometrySetup g = make_geometry(*o);
       const contact::ContactTable t = make_table(*o, g);
       results::CsvWriter w(*out, contact::ContactTable::column_names(), false, 0, 10);

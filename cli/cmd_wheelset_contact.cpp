@@ -78,7 +78,7 @@ int run_wheelset_contact(const WheelsetContactArgs& a) {
   };
   s.wheel = profile("wheel", s.wheel);
   s.rail = profile("rail", s.rail);
-  check_out_is_no_input(a.out, {s.wheel, s.rail});  // a profile file of the cases: not the result file
+  check_out_against_inputs(a.out, {s.wheel, s.rail});  // a profile file of the cases: not the result file
   s.track = engine::read_track_setup(root, "nominal_radius");
   if (auto m = root.find("material")) {
     m->allow_only({"E", "G", "nu", "mu"});
