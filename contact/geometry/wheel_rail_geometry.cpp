@@ -10,6 +10,7 @@
 #include <limits>
 
 #include "core/errors.hpp"
+#include "core/input_file.hpp"
 
 namespace railsim::contact {
 
@@ -50,7 +51,9 @@ double parse_inclination(const std::string& text, const std::string& where) {
     if (!text.empty() && end == text.c_str() + text.size() && std::isfinite(v) && v >= 0 && v <= 0.2)
       return std::atan(v);
   }
-  throw InputError(where + " '" + text + "': expected 1/N (e.g. 1/40, 1/20), a slope in [0, 0.2], or none");
+  // (The text as quote_input shows it: a NUL in it would end the message.)
+  throw InputError(where + " '" + quote_input(text) +
+                   "': expected 1/N (e.g. 1/40, 1/20), a slope in [0, 0.2], or none");
 }
 
 void TrackSetup::validate() const {
@@ -60,7 +63,9 @@ void TrackSetup::validate() const {
                        "] " + unit + " (got " + num(v) + ")");
   };
   check(gauge, 0.5, 2.5, "gauge", "m");
-  check(gauge_depth, 0.0, 0.05, "gauge_depth", "m");
+  // (0 is the top itself: no gauge-side point lies above it, the gauge could not be placed.)
+  if (!(std::isfinite(gauge_depth) && gauge_depth > 0.0 && gauge_depth <= 0.05))
+    throw InputError("track set-up: 'gauge_depth': expected a value in (0, 0.05] m (got " + num(gauge_depth) + ")");
   check(flange_back, 0.4, 2.4, "flange_back", "m");
   check(back_face, -0.2, 0.0, "back_face", "m");
   check(r0, 0.1, 1.5, "r0 (nominal rolling radius)", "m");
@@ -138,7 +143,8 @@ WheelRailGeometry::WheelRailGeometry(const Profile& wheel, const Profile& rail, 
   }
   if (!std::isfinite(ug))
     throw InputError(rail.source() + ": the rail profile does not reach " + num(setup_.gauge_depth * 1e3) +
-                     " mm below its top on the gauge side (cannot place it by gauge)");
+                     " mm below its top on the gauge side, where 'gauge_depth' measures the gauge (cannot place it by "
+                     "gauge)");
   rail_offset_ = 0.5 * setup_.gauge - ug;
 }
 

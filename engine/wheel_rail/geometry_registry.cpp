@@ -159,7 +159,7 @@ contact::TrackSetup read_track_setup(const InputNode& g, const std::string& radi
     t.inclination = std::atan(1.0 / 40.0);
   }
   if (g.has("gauge")) t.gauge = g.in_range("gauge", 0.9, 1.8);
-  if (g.has("gauge_depth")) t.gauge_depth = g.in_range("gauge_depth", 0.0, 0.03);
+  if (g.has("gauge_depth")) t.gauge_depth = g.in_range("gauge_depth", 0.0, 0.03, true);  // (0: the top itself)
   if (g.has("flange_back")) t.flange_back = g.in_range("flange_back", 0.8, 1.8);
   if (g.has("back_face")) t.back_face = g.in_range("back_face", -0.2, 0.0);
   if (g.has(radius_key)) t.r0 = g.in_range(radius_key, 0.1, 1.5);
