@@ -147,7 +147,7 @@ TEST_CASE("railsim on bad scenario files: exit 2 naming file, line, key and rang
   CHECK(r.output.find("place: track distance 0.00-0.40 m") != std::string::npos);
 }
 
-TEST_CASE("railsim contact on bad case files: exit 2 naming file, line, key and range; mu > 1 a warning",
+TEST_CASE("railsim contact on bad case files: exit 2 naming file, line, key and range, mu > 1 a warning",
           "[cli][bad_input]") {
   const std::string dir = test::temp_dir("bad_input_contact");
   const std::string out = " --model linear --out '" + dir + "/r.csv'";

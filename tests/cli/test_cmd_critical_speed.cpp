@@ -277,7 +277,7 @@ TEST_CASE("railsim critical-speed --reductions: a killed job restarts to byte-id
   }
 }
 
-TEST_CASE("railsim critical-speed: summaries record the variant; ramping names its start speed and marks the reading",
+TEST_CASE("railsim critical-speed: summaries record the variant, ramping names its start speed and marks the reading",
           "[cli][critical_speed]") {
   const std::string dir = railsim::test::temp_dir("cli_cs_record");
   const auto r = run_railsim("critical-speed '" + kScenario + "' --method ramping --v-min 140 --v-max 185 "

@@ -187,7 +187,7 @@ TEST_CASE("railsim run: summary lists every quantity with limit, margin, where, 
         Approx(0.85 * number(worst_of(js, "sum_y_2m"), "limit")).epsilon(1e-9));
 }
 
-TEST_CASE("railsim run: lateral shift relative to the rails on the ERRI track; absolute labelled", "[cli][run]") {
+TEST_CASE("railsim run: lateral shift relative to the rails on the ERRI track, absolute labelled", "[cli][run]") {
   // Issue 17: on the ERRI track the coach's absolute shift peaks at 7.49 mm, its shift relative
   // to the rails near 3.9 mm; the flange-contact warning (> 6 mm) must use the relative one.
   const std::string out = test::temp_dir("run_erri_shift");

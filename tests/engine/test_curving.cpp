@@ -144,7 +144,7 @@ TEST_CASE("curving: Manchester coach, Sum Y = M a_nc and leading wheelsets under
   CHECK(c.wheelsets[2].angle_of_attack.mean > c.wheelsets[3].angle_of_attack.mean + 1e-3);
 }
 
-TEST_CASE("curving on profiles: lateral (free axle) and full models agree; an imposed axle rotation brakes",
+TEST_CASE("curving on profiles: lateral (free axle) and full models agree, an imposed axle rotation brakes",
           "[engine][curving]") {
   // The coach in an R 300 m curve at 80 km/h on S1002/UIC60 1:40, leading wheelset in
   // flange-root contact (tests/data/engine/coach_curve_R300_profiles.yaml), both curve

@@ -163,9 +163,17 @@ TEST_CASE("Out-of-range positions give InputError", "[geometry][search][errors]"
   TrackSetup bad;
   bad.gauge = 3.0;
   CHECK_THROWS_WITH(bad.validate(), Catch::Contains("gauge"));
+  // The gauge is measured below the top of rail: at depth 0 (the top itself)
+  // no gauge-side point lies above it, so 0 is refused as out of range rather
+  // than failing later without naming the key.
+  TrackSetup top;
+  top.gauge_depth = 0.0;
+  CHECK_THROWS_WITH(top.validate(), Catch::Contains("'gauge_depth': expected a value in (0, 0.05] m (got 0)"));
+  top.gauge_depth = 0.014;
+  CHECK_NOTHROW(top.validate());
 }
 
-TEST_CASE("Rail inclination texts: 1/N, a slope or none; anything else named", "[geometry][errors]") {
+TEST_CASE("Rail inclination texts: 1/N, a slope or none, anything else named", "[geometry][errors]") {
   CHECK(parse_inclination("1/40", "--inclination") == Approx(std::atan(1.0 / 40.0)));
   CHECK(parse_inclination("0.05", "--inclination") == Approx(std::atan(0.05)));
   CHECK(parse_inclination("none", "--inclination") == 0.0);
@@ -180,4 +188,7 @@ TEST_CASE("Rail inclination texts: 1/N, a slope or none; anything else named", "
     CHECK_THROWS_WITH(parse_inclination(bad, "--inclination"),
                       Catch::Contains("--inclination '") && Catch::Contains("expected 1/N"));
   }
+  // A control byte in the text is shown, not passed on (a NUL ended the message there).
+  CHECK_THROWS_WITH(parse_inclination(std::string("1/40\0x", 6), "--inclination"),
+                    Catch::Contains("--inclination '1/40\\x00x': expected 1/N"));
 }

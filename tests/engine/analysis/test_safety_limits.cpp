@@ -22,7 +22,7 @@ TEST_CASE("Nadal limit matches the printed table to its precision", "[safety]") 
   CHECK(weinstock_limit(70.0 * M_PI / 180.0, 0.36) == Approx(1.200 + 0.36).margin(0.0006));
 }
 
-TEST_CASE("Prud'homme limit: P0 = 160 kN gives 63.3 kN; freight wagons k1 = 0.85", "[safety]") {
+TEST_CASE("Prud'homme limit: P0 = 160 kN gives 63.3 kN, freight wagons k1 = 0.85", "[safety]") {
   CHECK(prudhomme_limit(160e3) == Approx(63333.3).epsilon(1e-5));
   CHECK(prudhomme_limit(160e3, 0.85) == Approx(0.85 * 63333.3).epsilon(1e-5));
   // k1 (10 + 2 Q0 / 3) kN with Q0 = 80 kN is the same number.

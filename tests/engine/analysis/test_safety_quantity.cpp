@@ -114,7 +114,7 @@ TEST_CASE("upper percentile, median in curves only, maximum and rms", "[safety][
   CHECK(mx.y.empty());
 }
 
-TEST_CASE("samples outside every evaluated section; bad input", "[safety][quantity]") {
+TEST_CASE("samples outside every evaluated section, bad input", "[safety][quantity]") {
   auto q = spec(Statistic::maximum);
   q.use_section = [](const TrackSection&) { return false; };
   const Series s = series();

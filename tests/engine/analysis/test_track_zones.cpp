@@ -68,7 +68,7 @@ TEST_CASE("zone boundaries by radius: 5000 / 600 / 250 m", "[safety][zones]") {
   CHECK(track_sections(tw)[2].zone == TrackZone::small_radius_curve);  // R = 250 m: still >= 250
 }
 
-TEST_CASE("consecutive straights merge; very small radius and defects are found", "[safety][zones]") {
+TEST_CASE("consecutive straights merge, very small radius and defects are found", "[safety][zones]") {
   const track::Track t = inline_track(
       "name: t\nrail_spacing: 1.5\nsegments:\n"
       "  - {type: straight, length: 100}\n  - {type: straight, length: 50}\n"

@@ -413,7 +413,7 @@ TEST_CASE("wheelset-contact: --extrapolation none gives MIM's own grid forces, c
   CHECK(bad.output.find("--extrapolation") != std::string::npos);
 }
 
-TEST_CASE("wheelset-contact: omega free finds the free axle's speed; V / r0 drives the axle",
+TEST_CASE("wheelset-contact: omega free finds the free axle's speed, V / r0 drives the axle",
           "[engine][analysis][contact]") {
   // S1002 on UIC60 1:40, 60 kN per wheel, 20 m/s, CHOPAYA. Without omega the
   // axle turns at V / r0 and carries a torque: shifted 5 mm, a net 12 kN of
