@@ -762,6 +762,19 @@ ScenarioRunResult run_scenario(const Scenario& sc, const ScenarioRunOptions& o) 
       throw InputError("contact audit: tolerance must lie in (0, 1] of mu N");
     if (ca.threads < 1 || ca.threads > 64) throw InputError("contact audit: threads outside [1, 64]");
     if (ca.mim_grid < 8 || ca.mim_grid > 400) throw InputError("contact audit: MIM grid outside [8, 400]");
+    // Creep coefficients without a patch shape (conical wheels without a
+    // patch or Hertz curvatures) leave nothing to audit: said before the run,
+    // not after it (distributed contact makes its patches, a table carries
+    // them at its reference load, or the coupling has one).
+    const bool patches = m.coupling.options().patch_a > 0.0 ||
+                         std::any_of(m.wheelsets.begin(), m.wheelsets.end(), [](const auto& w) {
+                           if (w.geometry->distributed()) return true;
+                           const ContactPointGeometry c = w.geometry->main_point(0.0);
+                           return c.semi_a > 0.0 && c.N0 > 0.0;
+                         });
+    if (!patches)
+      throw InputError("contact audit: the run's contact gives creep coefficients without a patch shape (conical "
+                       "wheels without patch_a, patch_b), so its contact states have no patch to solve");
   }
   ContactStateRecorder contacts;
   spdlog::info("scenario '{}': vehicle '{}', {} states, {} wheelset model, {}, {:.4g} km/h", sc.name, m.vehicle_name,

@@ -162,11 +162,14 @@ TEST_CASE("contact audit of a run: the model on the geometry's coefficients is r
   CHECK_THROWS_WITH(run_scenario(sc, bad), Catch::Contains("tolerance"));
   bad.contact_audit.tolerance = 0.0;
   CHECK_THROWS_WITH(run_scenario(sc, bad), Catch::Contains("tolerance"));
-  // Prescribed coefficients without a patch shape: nothing to solve, said so.
+  // Prescribed coefficients without a patch shape: nothing to solve, said so
+  // before the run (no channels written: the check used to come after it).
   Scenario single = load_scenario(test::source_path("scenarios/single_wheelset.yaml"));
   single.duration = 0.05;
   ScenarioRunOptions so;
   so.contact_audit.samples = 4;
   so.contact_audit.mim_grid = kGrid;
-  CHECK_THROWS_WITH(run_scenario(single, so), Catch::Contains("patch"));
+  so.out_dir = test::temp_dir("audit_no_patch");
+  CHECK_THROWS_WITH(run_scenario(single, so), Catch::Contains("without a patch shape"));
+  CHECK_FALSE(std::filesystem::exists(so.out_dir + "/channels.csv"));
 }
