@@ -138,7 +138,16 @@ void read_motion(const InputNode& root, double track_length, Scenario& sc) {
                           " s); beyond it the track is the extension of its end without irregularities: shorten "
                           "the duration or lengthen the track");
   }
-  sc.output_interval = root.has("output_interval") ? root.in_range("output_interval", 0.0, sc.duration, true) : 0.01;
+  sc.output_interval = 0.01;
+  if (root.has("output_interval")) {
+    sc.output_interval = root.positive("output_interval");
+    // Named with both keys (a --set duration that made the run shorter than the
+    // interval was reported as a bad output_interval alone).
+    if (sc.output_interval > sc.duration)
+      root.at("output_interval")
+          .fail(config::format_number(sc.output_interval) + " s is longer than the run (key 'duration': " +
+                config::format_number(sc.duration) + " s); give an output_interval in (0, duration]");
+  }
   // Bounded output: the run keeps every sample in memory (RunHistory) and writes it (channels.csv).
   const double samples = std::floor(sc.duration / sc.output_interval) + 1.0;
   if (samples > kMaxOutputSamples) {

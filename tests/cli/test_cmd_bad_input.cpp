@@ -81,6 +81,10 @@ TEST_CASE("railsim on bad scenario files: exit 2 naming file, line, key and rang
       {"a long junk line", "run " + bad("junk_long_line.yaml") + out, {"junk_long_line.yaml:1: expected a mapping"}},
       {"--speed-kmh nan", "run '" + test::source_path("scenarios/single_wheelset.yaml") + "' --speed-kmh nan" + out,
        {"--speed-kmh: expected a finite number (got 'nan')"}},
+      // A duration shorter than the output interval names the --set that made it so.
+      {"--set duration=1e-300",
+       "run '" + test::source_path("scenarios/single_wheelset.yaml") + "' --set duration=1e-300" + out,
+       {"--set duration=1e-300: ", "key 'output_interval': 0.005 s is longer than the run (key 'duration': 1e-300 s)"}},
       {"initial shift 0.5 m", "run " + bad("scenario_initial_lateral_huge.yaml") + out,
        {"scenario_initial_lateral_huge.yaml:10: key 'initial.ws1.lateral'", "[-0.05, 0.05] m", "got 0.5"}},
       {"initial yaw 2 rad", "run " + bad("scenario_initial_yaw_huge.yaml") + out,
