@@ -119,8 +119,9 @@ OutputLock::~OutputLock() {
   if (fd_ >= 0 && !created_.empty()) {
     std::error_code ec;
     bool only_markers = true;
-    for (const auto& e : std::filesystem::directory_iterator(created_.front(), ec)) {
-      const std::string name = e.path().filename().string();
+    // (increment(ec), not ++: a destructor must not throw)
+    for (std::filesystem::directory_iterator it(created_.front(), ec), end; !ec && it != end; it.increment(ec)) {
+      const std::string name = it->path().filename().string();
       if (name != ".railsim.lock" && name != ".railsim.analysis") only_markers = false;
     }
     if (!ec && only_markers) {
