@@ -57,15 +57,14 @@ double parse_inclination(const std::string& text, const std::string& where) {
 }
 
 void TrackSetup::validate() const {
-  auto check = [](double v, double lo, double hi, const char* name, const char* unit) {
-    if (!(std::isfinite(v) && v >= lo && v <= hi))
-      throw InputError(std::string("track set-up: '") + name + "': expected a value in [" + num(lo) + ", " + num(hi) +
-                       "] " + unit + " (got " + num(v) + ")");
+  auto check = [](double v, double lo, double hi, const char* name, const char* unit, bool lo_open = false) {
+    if (!(std::isfinite(v) && (lo_open ? v > lo : v >= lo) && v <= hi))
+      throw InputError(std::string("track set-up: '") + name + "': expected a value in " + (lo_open ? "(" : "[") +
+                       num(lo) + ", " + num(hi) + "] " + unit + " (got " + num(v) + ")");
   };
   check(gauge, 0.5, 2.5, "gauge", "m");
   // (0 is the top itself: no gauge-side point lies above it, the gauge could not be placed.)
-  if (!(std::isfinite(gauge_depth) && gauge_depth > 0.0 && gauge_depth <= 0.05))
-    throw InputError("track set-up: 'gauge_depth': expected a value in (0, 0.05] m (got " + num(gauge_depth) + ")");
+  check(gauge_depth, 0.0, 0.05, "gauge_depth", "m", true);
   check(flange_back, 0.4, 2.4, "flange_back", "m");
   check(back_face, -0.2, 0.0, "back_face", "m");
   check(r0, 0.1, 1.5, "r0 (nominal rolling radius)", "m");
