@@ -14,6 +14,7 @@
 #include <cmath>
 
 #include "core/errors.hpp"
+#include "engine/integrators/serial_vector_ops.hpp"
 
 namespace railsim::engine {
 
@@ -24,6 +25,8 @@ const char* const kExplicitHint =
 SundialsCommon::SundialsCommon(OdeSystem& s, const IntegratorOptions& o) : sys(s), opt(o) {
   if (SUNContext_Create(nullptr, &ctx) != 0) throw NumericalError("SUNDIALS: cannot create a context");
   y = N_VNew_Serial(sys.size(), ctx);
+  if (!y) throw NumericalError("SUNDIALS: cannot create the state vector");
+  install_serial_vector_ops(y);  // CVODE's and ARKODE's work vectors are its clones
 }
 
 SundialsCommon::~SundialsCommon() {
@@ -42,6 +45,8 @@ void SundialsCommon::load(const Eigen::VectorXd& x) {
 N_Vector SundialsCommon::abs_tolerances() {
   if (!atol_vec) {
     atol_vec = N_VNew_Serial(sys.size(), ctx);
+    if (!atol_vec) throw NumericalError("SUNDIALS: cannot create the tolerance vector");
+    install_serial_vector_ops(atol_vec);
     sys.tolerances(opt, N_VGetArrayPointer(atol_vec));
   }
   return atol_vec;
