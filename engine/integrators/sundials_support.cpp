@@ -15,6 +15,7 @@
 
 #include "core/errors.hpp"
 #include "engine/integrators/serial_vector_ops.hpp"
+#include "engine/integrators/sparse_matrix_ops.hpp"
 
 namespace railsim::engine {
 
@@ -73,8 +74,10 @@ void SundialsCommon::make_linear_solver(const Eigen::VectorXd& x0, double t0) {
     if (!sys.pattern(colptr, rowind))
       throw InputError("integrator: linear_solver 'klu' needs a model with a sparsity pattern");
     A = SUNSparseMatrix(n, n, sunindextype(rowind.size()), CSC_MAT, ctx);
+    if (!A) throw NumericalError("SUNDIALS: cannot create the sparse matrix");
+    install_sparse_matrix_ops(A);  // before the solver and CVODE clone it
     LS = SUNLinSol_KLU(y, A, ctx);
-    if (!A || !LS) throw NumericalError("SUNDIALS: cannot create the KLU sparse solver");
+    if (!LS) throw NumericalError("SUNDIALS: cannot create the KLU sparse solver");
   } else if (opt.linear_solver == "band") {
     // Bandwidth from the Jacobian pattern at a slightly perturbed x0.
     Eigen::VectorXd xp = x0;
