@@ -195,7 +195,8 @@ TEST_CASE("railsim contact on bad case files: exit 2 naming file, line, key and 
 
 // --out naming one of the command's input files: refused before anything is
 // written, the file left as it was (geometry, conicity and wheelset-contact
-// overwrote a wheel profile or table given as the result file, track its track file).
+// overwrote a wheel profile or table given as the result file, track its track file or the
+// measured-irregularity file the track file reads).
 TEST_CASE("railsim --out naming an input file (profile, table, track): exit 2, the file untouched",
           "[cli][bad_input]") {
   const std::string dir = test::temp_dir("bad_input_out_is_input");
@@ -207,6 +208,12 @@ TEST_CASE("railsim --out naming an input file (profile, table, track): exit 2, t
   const std::string wheel = copy(test::data_path("contact_geometry/s1002_netter.csv"), "wheel.csv");
   const std::string table = copy(test::source_path("vehicles/contact_tables/RSGEO_S1002_UIC60_1in40.dat"), "t.dat");
   const std::string track = copy(test::source_path("tracks/curve_R300.yaml"), "track.yaml");
+  // A track file's measured-irregularity file is an input of railsim track too (found by a probe: --out
+  // naming it overwrote the survey); the track file names it relative to its own folder.
+  const std::string survey = copy(test::data_path("tracks/measured_good.csv"), "survey.csv");
+  const std::string surveyed = dir + "/surveyed.yaml";
+  std::ofstream(surveyed) << "rail_spacing: 1.5\nsegments:\n  - {type: straight, length: 20}\n"
+                             "irregularities:\n  - {type: measured, file: survey.csv, units: mm}\n";
   const std::string cases = dir + "/cases.yaml";
   std::ofstream(cases) << "wheel: wheel.csv\nrail: UIC60\ninclination: 1/40\nspeed: 20\n"
                           "positions:\n  - {y: 0.003, Fz: 6e4}\n";
@@ -217,6 +224,7 @@ TEST_CASE("railsim --out naming an input file (profile, table, track): exit 2, t
                         Case{"conicity --no-cache --wheel '" + wheel + "' --out '" + wheel + "'", wheel},
                         Case{"conicity --table '" + table + "' --out '" + table + "'", table},
                         Case{"track '" + track + "' --out '" + track + "'", track},
+                        Case{"track '" + surveyed + "' --out '" + survey + "'", survey},
                         Case{"wheelset-contact '" + cases + "' --out '" + wheel + "'", wheel}}) {
     const std::string before = test::read_text(c.file);
     const auto r = test::run_railsim(c.args);
