@@ -334,6 +334,9 @@ TEST_CASE("railsim on bad options: exit 2 naming the option and the range", "[cl
       // a shift step too coarse for the regression (12 mm gave 0 at every amplitude).
       {"a +-0.5 mm table on conicity", "conicity --table " + bad("table_narrow.dat"),
        {"table_narrow.dat: the table covers shifts up to +-0.5 mm: no amplitude of 1..6 mm fits"}},
+      {"+-0.5 mm shifts on conicity", "conicity --no-cache --y-min -0.0005 --y-max 0.0005",
+       {"--y-min/--y-max: the shifts -0.5 .. 0.5 mm fit no amplitude of 1..6 mm", "--y-min at most -1 mm",
+        "--y-max at least 1 mm"}},
       {"compare-yq into a compared run's folder", "compare-yq " + sc + " '" + dir + "/run_a' --out '" + dir + "/run_a/'",
        {"--out " + dir + "/run_a/: is the run folder " + dir + "/run_a being compared"}},
       // compare-yq labels: one per folder, none empty, none twice (the rows could not be told apart).
@@ -349,6 +352,30 @@ TEST_CASE("railsim on bad options: exit 2 naming the option and the range", "[cl
        {"--y-step: equivalent conicity at amplitude 1 mm: the table's y step 12 mm is too coarse",
         "(at most a quarter of the amplitude, 0.25 mm)"}},
   });
+}
+
+// conicity over shifts narrower than +-6 mm: the amplitudes whose sweep fits are computed (the same values as
+// over the full range) and the others named in a warning, as with a narrow --table. It refused every
+// amplitude below +-3 mm (found by a probe), where conicity --table of that range gave 1 and 2 mm.
+TEST_CASE("railsim conicity over narrow shifts: the amplitudes that fit, a warning naming the others",
+          "[cli][bad_input]") {
+  const auto full = test::run_railsim("conicity --no-cache");
+  const auto narrow = test::run_railsim("conicity --no-cache --y-min -0.0025 --y-max 0.0025");
+  INFO(full.output << "\n" << narrow.output);
+  REQUIRE(full.exit_code == 0);
+  CHECK(narrow.exit_code == 0);
+  auto row = [](const std::string& out, int a) {
+    const std::string key = "\n" + std::to_string(a) + ",";
+    const std::size_t k = out.find(key);
+    return k == std::string::npos ? std::string() : out.substr(k + 1, out.find('\n', k + 1) - k - 1);
+  };
+  for (int a : {1, 2}) {
+    CHECK_FALSE(row(narrow.output, a).empty());
+    CHECK(row(narrow.output, a) == row(full.output, a));
+  }
+  for (int a : {3, 6}) CHECK(row(narrow.output, a).empty());
+  CHECK(narrow.output.find("[warning] --y-min/--y-max: amplitudes 3..6 mm lie beyond the shifts -2.5 .. 2.5 mm: "
+                           "not computed") != std::string::npos);
 }
 
 TEST_CASE("a second railsim writing the same output folder exits 2 naming the folder", "[cli][bad_input]") {
