@@ -341,6 +341,31 @@ TEST_CASE("wheelset-contact: bad cases exit 2 naming the key", "[engine][analysi
   }
 }
 
+// mu above cot(delta) on a flange of angle delta: the lateral creep force pulling the wheel down the flange
+// can outweigh the normal force's lift at any normal load, and no normal load carries the wheel's vertical
+// force (mu 1 at 66.7 deg: exit 3, "not reached ... mu tan(delta) near 1?"). The pose has no solution with
+// this friction: exit 2 naming the position, mu and the range that always solves; mu 0.3 solves it.
+TEST_CASE("wheelset-contact: a self-locking flange (mu >= cot delta) is an input error naming mu",
+          "[engine][analysis][contact]") {
+  const std::string dir = test::temp_dir("wheelset_contact_self_locking");
+  auto run = [&](const std::string& mu) {
+    const std::string f = dir + "/lock.yaml";
+    std::ofstream(f) << "wheel: S1002\nrail: UIC60\ninclination: 1/40\nmaterial: {G: 8.2e10, nu: 0.28, mu: " << mu
+                     << "}\nspeed: 2.0\npositions:\n  - {y: 0.0065, yaw: -0.01, Fz: 1e4}\n";
+    return test::run_railsim("wheelset-contact " + f + " --out " + dir + "/l.csv");
+  };
+  const auto bad = run("1.0");
+  INFO(bad.output);
+  CHECK(bad.exit_code == 2);
+  for (const char* part : {"lock.yaml:7: key 'positions[0]': ",
+                           "the left wheel's vertical force 10000 N is not reached",
+                           "is self-locking with key 'material.mu' 1", "carries any load for mu in (0, 0.4"})
+    CHECK(bad.output.find(part) != std::string::npos);
+  const auto good = run("0.3");
+  INFO(good.output);
+  CHECK(good.exit_code == 0);
+}
+
 TEST_CASE("wheelset-contact: every patch of a wheel is written, however many", "[engine][analysis][contact]") {
   // S1002 with a wavy tread (0.05 mm, 4 mm wavelength) on UIC60 at 100 kN: four patches on a wheel
   // (the CSV held three, and the largest patch, 70 kN, was lost without a word).
