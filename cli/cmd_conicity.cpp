@@ -72,8 +72,19 @@ void register_conicity(CLI::App& app, CommandRunner& run) {
       }
       const GeometrySetup g = make_geometry(*o);
       const contact::ContactTable t = make_table(*o, g);
+      // As with --table: the amplitudes whose sweep +-A lies within the shifts are computed (their
+      // regression sees the whole delta-r curve over +-A, the result is the conicity at that amplitude),
+      // the others are named in a warning; only a range that fits no amplitude is refused. (A range
+      // narrower than +-3 mm refused every amplitude, where a table of the same range gave 1 and 2 mm.)
+      const double reach = std::min(-t.grid().y_min, t.grid().y_max);
+      const int fitting = std::min(6, int(std::floor(reach * 1e3 + 1e-9)));
+      if (fitting < 1)
+        throw InputError("--y-min/--y-max: the shifts " + config::format_number(t.grid().y_min * 1e3) + " .. " +
+                         config::format_number(t.grid().y_max * 1e3) +
+                         " mm fit no amplitude of 1..6 mm (the sweep +-A must lie within them: --y-min at most -1 mm "
+                         "and --y-max at least 1 mm; -6 mm and 6 mm for every amplitude)");
       double conicity[6];
-      for (int a = 1; a <= 6; ++a) {
+      for (int a = 1; a <= fitting; ++a) {
         try {
           conicity[a - 1] = contact::equivalent_conicity(t, a * 1e-3);
         } catch (const InputError& e) {
@@ -83,7 +94,12 @@ void register_conicity(CLI::App& app, CommandRunner& run) {
         }
       }
       std::printf("amplitude_mm,equivalent_conicity\n");
-      for (int a = 1; a <= 6; ++a) std::printf("%d,%.5f\n", a, conicity[a - 1]);
+      for (int a = 1; a <= fitting; ++a) std::printf("%d,%.5f\n", a, conicity[a - 1]);
+      if (fitting < 6)
+        spdlog::warn("--y-min/--y-max: amplitudes {}..6 mm lie beyond the shifts {} .. {} mm: not computed (widen the "
+                     "range to +-6 mm for every amplitude)",
+                     fitting + 1, config::format_number(t.grid().y_min * 1e3),
+                     config::format_number(t.grid().y_max * 1e3));
       if (!out->empty()) {
         const auto c = contact::rolling_radius_difference(t);
         results::CsvWriter w(*out, {"y", "delta_r"}, false, 0, 10);

@@ -15,6 +15,8 @@ namespace railsim::cli {
 
 namespace {
 
+constexpr double kMaxSpin = 1000.0;  // |phi| [1/m] of a case
+
 contact::ReductionFactors read_reduction(const config::InputNode& node) {
   const std::string where = node.where() + ": key '" + node.path() + "'";
   if (node.is_map()) {
@@ -38,8 +40,9 @@ ContactCase read_case(const config::InputNode& n, const contact::Material& mater
   const bool axes = n.has("a") || n.has("b");
   if (curv && axes) n.fail("give either the curvatures A, B [1/m] or the semi-axes a, b [m], not both");
   if (!curv && !axes) n.fail("missing the contact shape: give A, B [1/m] or a, b [m]");
-  // A normal load up to 10 MN (a wheel carries 50-150 kN); semi-axes from 1 um to 1 m.
-  const double Fz = n.in_range("Fz", 0.0, 1e7, true);
+  // A normal load from 1 N to 10 MN (a wheel carries 50-150 kN, a flange-root patch some 500 N; 1e-300 N was
+  // taken, as in wheelset-contact's floor of 1 N); semi-axes from 1 um to 1 m.
+  const double Fz = n.in_range("Fz", 1.0, 1e7);
   try {
     c.input.patch = curv ? contact::hertz_from_load(n.positive("A"), n.positive("B"), Fz, material)
                          : contact::hertz_from_semi_axes(n.in_range("a", 1e-6, 1.0), n.in_range("b", 1e-6, 1.0), Fz,
@@ -65,7 +68,10 @@ ContactCase read_case(const config::InputNode& n, const contact::Material& mater
                   "patch aspect ratio a/b = %.4g outside [0.01, 100] (wheel-rail patches lie within 0.05-20)", ratio);
     n.at(curv ? "A" : "a").fail(buf);
   }
-  c.input.creep = {n.number("xi"), n.number("eta"), n.number("phi")};
+  // Spin [1/m] within +-1000: on a wheel-rail patch sin(contact angle) / rolling radius stays below 4 1/m
+  // (flange, 0.28 m wheel) and the yaw-rate term psi'/V is of the same order; 1000 1/m turns the patch
+  // through a radian per mm rolled. 1e300 was taken (FASTSIM gave forces, flagged valid).
+  c.input.creep = {n.number("xi"), n.number("eta"), n.in_range("phi", -kMaxSpin, kMaxSpin)};
   c.input.material = material;
   c.input.reduction = k;
   if (n.has("V")) c.input.rolling_speed = n.in_range("V", 0.0, 200.0);  // [m/s], as a scenario's speed

@@ -10,7 +10,7 @@
 //     - {id: patch, a: 0.0065, b: 0.0049, Fz: 75000, xi: 0, eta: 0.001, phi: 0.2, V: 30}
 // Each case has either the relative curvatures A, B [1/m] or the semi-axes a, b [m]
 // (the curvatures then follow from the Hertz shape equation and the load), the
-// normal load Fz [N], the creepages xi, eta [-] and phi [1/m], and optionally the
+// normal load Fz [N] in [1, 1e7], the creepages xi, eta [-] and phi [1/m] in [-1000, 1000], and optionally the
 // rolling speed V [m/s] (slip-velocity-dependent friction). Unknown keys, missing
 // keys and out-of-range values are InputErrors naming file, line and key.
 #pragma once

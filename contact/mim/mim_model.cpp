@@ -1,6 +1,7 @@
 // The exact contact solver facade and the tangential model "mim"; see mim_model.hpp.
 #include "contact/mim/mim_model.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -241,6 +242,9 @@ const MimSolution& MimSolver::solve_shift_hertz(const HertzPatch& patch, double 
 
 namespace {
 
+// The model's a/b domain (MimModel::compute).
+constexpr double kMinAspect = 0.01, kMaxAspect = 100.0;
+
 class MimWorkspace final : public TangentialWorkspace {
  public:
   MimWorkspace(const MimOptions& o, const MimOptions* half)
@@ -289,6 +293,18 @@ class MimModel final : public TangentialModel {
     }
     HertzPatch patch = in.patch;
     if (!(patch.a > 0.0) || !(patch.b > 0.0)) patch = hertz_from_load(patch.A, patch.B, patch.Fz, in.material);
+    // a/b outside [kMinAspect, kMaxAspect]: the grid's long side grows with the ratio into minutes and
+    // gigabytes (a 1 N flange patch of a/b 385 in `railsim wheelset-contact`: 63 s, 1.5 GB, within the memory
+    // cap). The patch is solved at the nearest edge of the domain with its size sqrt(ab) and load kept, as
+    // mim_table holds a/b at its table's edge, and flagged invalid. Wheel-rail patches lie within a/b
+    // 0.05-20; `railsim contact` refuses a case outside this domain (support_contact_cases.cpp).
+    const double aspect = patch.a / patch.b;
+    const bool held = aspect > 0.0 && std::isfinite(aspect) &&  // else: solve_hertz refuses the patch, naming it
+                      !(aspect >= kMinAspect * (1 - 1e-9) && aspect <= kMaxAspect * (1 + 1e-9));
+    if (held) {
+      const double size = std::sqrt(patch.a * patch.b), r = std::sqrt(std::clamp(aspect, kMinAspect, kMaxAspect));
+      patch = hertz_from_semi_axes(size * r, size / r, patch.Fz, in.material);
+    }
     const Creepages c{in.reduction.k11 * in.creep.xi, in.reduction.k22 * in.creep.eta,
                       in.reduction.k23 * in.creep.phi};
     // The half grid first: its pressure starts the fine grid's normal iteration.
@@ -309,6 +325,10 @@ class MimModel final : public TangentialModel {
       f.Mz = extrapolate(s.Mz, h->Mz);
       f.iterations += h->normal.iterations + h->tangential.iterations;
       converged = converged && h->converged();
+    }
+    if (held) {
+      f.valid = false;
+      f.reason = "mim: a/b outside [0.01, 100], MIM's domain (solved at its edge, sqrt(ab) and load kept)";
     }
     if (!converged) {
       f.valid = false;

@@ -260,10 +260,28 @@ WheelsetContactResult solve_position(const WheelsetContactSetup& s, const contac
           g0 = g1;
           q1 = q2;
         }
-        if (!converged)
+        if (!converged) {
+          // Self-locking flange: the vertical force of a patch is N (cos(delta) - (|Fy| / N) sin(delta)) with
+          // |Fy| <= mu N, so for mu < cot(delta) it grows with N past any Fz; at mu >= cot(delta) (0.36 at
+          // 70 deg) a lateral creep force pulling the wheel down the flange can outweigh the normal force's
+          // lift at every N, and no normal load carries Fz (mu 1 at 66.7 deg, found by a probe). The pose
+          // has no solution with this friction: an input error naming mu and the range that always solves.
+          double delta = 0.0;  // the steepest patch of the wheel (engine sign: > 0 on the flange)
+          for (const auto& P : W.patches) delta = std::max(delta, sg * P.contact_angle);
+          const double mu = s.material.mu;
+          if (delta > 0.0 && mu * std::tan(delta) >= 1.0 && -W.Fz < pos.Fz)  // short of Fz: held down
+            throw InputError("wheelset contact: y = " + num(pos.y) + " m, yaw = " + num(pos.yaw) + " rad: the " +
+                             (i == 0 ? "left" : "right") + " wheel's vertical force " + num(pos.Fz) +
+                             " N is not reached: its flange contact at " + num(delta * 180.0 / M_PI) +
+                             " deg is self-locking with key 'material.mu' " + num(mu) +
+                             " (the lateral creep force pulls the wheel down the flange more than the normal "
+                             "force lifts it, at any normal load); a contact of this angle carries any load for mu "
+                             "in (0, " + num(1.0 / std::tan(delta)) + ") (cot of the angle), or change the "
+                             "position's yaw");
           throw NumericalError("wheelset contact: y = " + num(pos.y) + " m, yaw = " + num(pos.yaw) + " rad: the " +
                                (i == 0 ? "left" : "right") + " wheel's vertical force " + num(pos.Fz) +
-                               " N is not reached (the creep forces carry it off, mu tan(delta) near 1?)");
+                               " N is not reached (the normal-load iteration did not converge)");
+        }
       }
     };
     const double nominal = pos.has_omega ? pos.omega : s.speed / s.track.r0;

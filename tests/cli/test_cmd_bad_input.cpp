@@ -165,7 +165,7 @@ TEST_CASE("railsim contact on bad case files: exit 2 naming file, line, key and 
       {"a/b 1000 with mim", "contact " + bad("contact_aspect_1000.yaml") + " --model mim --out '" + dir + "/a.csv'",
        {"contact_aspect_1000.yaml:4: key 'cases[0].a'", "a/b = 1000 outside [0.01, 100]"}},
       {"Fz 1e300", "contact " + bad("contact_fz_huge.yaml") + out,
-       {"contact_fz_huge.yaml:4: key 'cases[0].Fz': expected a number in (0, 10000000] (got 1e+300)"}},
+       {"contact_fz_huge.yaml:4: key 'cases[0].Fz': expected a number in [1, 10000000] (got 1e+300)"}},
       {"E 1 Pa", "contact " + bad("contact_e_one.yaml") + out,
        {"contact_e_one.yaml:2: key 'material.E': expected a number in [1000000000, 10000000000000] (got 1)"}},
       {"flat curvatures", "contact " + bad("contact_flat_curvatures.yaml") + out,
@@ -195,7 +195,8 @@ TEST_CASE("railsim contact on bad case files: exit 2 naming file, line, key and 
 
 // --out naming one of the command's input files: refused before anything is
 // written, the file left as it was (geometry, conicity and wheelset-contact
-// overwrote a wheel profile or table given as the result file, track its track file).
+// overwrote a wheel profile or table given as the result file, track its track file or the
+// measured-irregularity file the track file reads).
 TEST_CASE("railsim --out naming an input file (profile, table, track): exit 2, the file untouched",
           "[cli][bad_input]") {
   const std::string dir = test::temp_dir("bad_input_out_is_input");
@@ -207,6 +208,12 @@ TEST_CASE("railsim --out naming an input file (profile, table, track): exit 2, t
   const std::string wheel = copy(test::data_path("contact_geometry/s1002_netter.csv"), "wheel.csv");
   const std::string table = copy(test::source_path("vehicles/contact_tables/RSGEO_S1002_UIC60_1in40.dat"), "t.dat");
   const std::string track = copy(test::source_path("tracks/curve_R300.yaml"), "track.yaml");
+  // A track file's measured-irregularity file is an input of railsim track too (found by a probe: --out
+  // naming it overwrote the survey); the track file names it relative to its own folder.
+  const std::string survey = copy(test::data_path("tracks/measured_good.csv"), "survey.csv");
+  const std::string surveyed = dir + "/surveyed.yaml";
+  std::ofstream(surveyed) << "rail_spacing: 1.5\nsegments:\n  - {type: straight, length: 20}\n"
+                             "irregularities:\n  - {type: measured, file: survey.csv, units: mm}\n";
   const std::string cases = dir + "/cases.yaml";
   std::ofstream(cases) << "wheel: wheel.csv\nrail: UIC60\ninclination: 1/40\nspeed: 20\n"
                           "positions:\n  - {y: 0.003, Fz: 6e4}\n";
@@ -217,6 +224,7 @@ TEST_CASE("railsim --out naming an input file (profile, table, track): exit 2, t
                         Case{"conicity --no-cache --wheel '" + wheel + "' --out '" + wheel + "'", wheel},
                         Case{"conicity --table '" + table + "' --out '" + table + "'", table},
                         Case{"track '" + track + "' --out '" + track + "'", track},
+                        Case{"track '" + surveyed + "' --out '" + survey + "'", survey},
                         Case{"wheelset-contact '" + cases + "' --out '" + wheel + "'", wheel}}) {
     const std::string before = test::read_text(c.file);
     const auto r = test::run_railsim(c.args);
@@ -326,6 +334,9 @@ TEST_CASE("railsim on bad options: exit 2 naming the option and the range", "[cl
       // a shift step too coarse for the regression (12 mm gave 0 at every amplitude).
       {"a +-0.5 mm table on conicity", "conicity --table " + bad("table_narrow.dat"),
        {"table_narrow.dat: the table covers shifts up to +-0.5 mm: no amplitude of 1..6 mm fits"}},
+      {"+-0.5 mm shifts on conicity", "conicity --no-cache --y-min -0.0005 --y-max 0.0005",
+       {"--y-min/--y-max: the shifts -0.5 .. 0.5 mm fit no amplitude of 1..6 mm", "--y-min at most -1 mm",
+        "--y-max at least 1 mm"}},
       {"compare-yq into a compared run's folder", "compare-yq " + sc + " '" + dir + "/run_a' --out '" + dir + "/run_a/'",
        {"--out " + dir + "/run_a/: is the run folder " + dir + "/run_a being compared"}},
       // compare-yq labels: one per folder, none empty, none twice (the rows could not be told apart).
@@ -341,6 +352,30 @@ TEST_CASE("railsim on bad options: exit 2 naming the option and the range", "[cl
        {"--y-step: equivalent conicity at amplitude 1 mm: the table's y step 12 mm is too coarse",
         "(at most a quarter of the amplitude, 0.25 mm)"}},
   });
+}
+
+// conicity over shifts narrower than +-6 mm: the amplitudes whose sweep fits are computed (the same values as
+// over the full range) and the others named in a warning, as with a narrow --table. It refused every
+// amplitude below +-3 mm (found by a probe), where conicity --table of that range gave 1 and 2 mm.
+TEST_CASE("railsim conicity over narrow shifts: the amplitudes that fit, a warning naming the others",
+          "[cli][bad_input]") {
+  const auto full = test::run_railsim("conicity --no-cache");
+  const auto narrow = test::run_railsim("conicity --no-cache --y-min -0.0025 --y-max 0.0025");
+  INFO(full.output << "\n" << narrow.output);
+  REQUIRE(full.exit_code == 0);
+  CHECK(narrow.exit_code == 0);
+  auto row = [](const std::string& out, int a) {
+    const std::string key = "\n" + std::to_string(a) + ",";
+    const std::size_t k = out.find(key);
+    return k == std::string::npos ? std::string() : out.substr(k + 1, out.find('\n', k + 1) - k - 1);
+  };
+  for (int a : {1, 2}) {
+    CHECK_FALSE(row(narrow.output, a).empty());
+    CHECK(row(narrow.output, a) == row(full.output, a));
+  }
+  for (int a : {3, 6}) CHECK(row(narrow.output, a).empty());
+  CHECK(narrow.output.find("[warning] --y-min/--y-max: amplitudes 3..6 mm lie beyond the shifts -2.5 .. 2.5 mm: "
+                           "not computed") != std::string::npos);
 }
 
 TEST_CASE("a second railsim writing the same output folder exits 2 naming the folder", "[cli][bad_input]") {

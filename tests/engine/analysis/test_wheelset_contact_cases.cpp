@@ -341,6 +341,53 @@ TEST_CASE("wheelset-contact: bad cases exit 2 naming the key", "[engine][analysi
   }
 }
 
+// A flange touching at 1 N: a patch of a/b 122. MIM solved it on a grid of N x 122 N elements (a/b 385 took
+// 63 s and 1.5 GB); now at the edge of its a/b domain [0.01, 100] (sqrt(ab) and load kept), flagged in the
+// CSV's valid column and in the warning that names the model, the patch and why.
+TEST_CASE("wheelset-contact: mim holds a patch beyond a/b 100 at the edge, flagged", "[engine][analysis][contact]") {
+  const std::string dir = test::temp_dir("wheelset_contact_mim_aspect");
+  const std::string f = dir + "/graze.yaml";
+  std::ofstream(f) << "wheel: S1002\nrail: UIC60\ninclination: 1/40\nmaterial: {G: 8.2e10, nu: 0.28, mu: 0.3}\n"
+                      "speed: 2.0\npositions:\n  - {y: 0.0065, yaw: 0.01, Fz: 1}\n";
+  const auto r = test::run_railsim("wheelset-contact " + f + " --model mim --grid 16 --out " + dir + "/g.csv");
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  const auto t = results::read_csv(dir + "/g.csv");
+  REQUIRE(t.rows.size() == 1);
+  CHECK(t.number(0, "left1_a") / t.number(0, "left1_b") > 100.0);  // the geometry's patch, as found
+  CHECK(t.number(0, "left1_valid") == 0.0);
+  CHECK(t.number(0, "right1_valid") == 1.0);
+  CHECK(std::abs(t.number(0, "left1_Fy_patch")) <= 0.3 * t.number(0, "left1_N") * 1.001);
+  CHECK(r.output.find("graze.yaml:7: key 'positions[0]': the left wheel's forces are outside the validity domain of "
+                      "model mim: patch 1") != std::string::npos);
+  CHECK(r.output.find("mim: a/b outside [0.01, 100], MIM's domain (solved at its edge") != std::string::npos);
+}
+
+// mu above cot(delta) on a flange of angle delta: the lateral creep force pulling the wheel down the flange
+// can outweigh the normal force's lift at any normal load, and no normal load carries the wheel's vertical
+// force (mu 1 at 66.7 deg: exit 3, "not reached ... mu tan(delta) near 1?"). The pose has no solution with
+// this friction: exit 2 naming the position, mu and the range that always solves; mu 0.3 solves it.
+TEST_CASE("wheelset-contact: a self-locking flange (mu >= cot delta) is an input error naming mu",
+          "[engine][analysis][contact]") {
+  const std::string dir = test::temp_dir("wheelset_contact_self_locking");
+  auto run = [&](const std::string& mu) {
+    const std::string f = dir + "/lock.yaml";
+    std::ofstream(f) << "wheel: S1002\nrail: UIC60\ninclination: 1/40\nmaterial: {G: 8.2e10, nu: 0.28, mu: " << mu
+                     << "}\nspeed: 2.0\npositions:\n  - {y: 0.0065, yaw: -0.01, Fz: 1e4}\n";
+    return test::run_railsim("wheelset-contact " + f + " --out " + dir + "/l.csv");
+  };
+  const auto bad = run("1.0");
+  INFO(bad.output);
+  CHECK(bad.exit_code == 2);
+  for (const char* part : {"lock.yaml:7: key 'positions[0]': ",
+                           "the left wheel's vertical force 10000 N is not reached",
+                           "is self-locking with key 'material.mu' 1", "carries any load for mu in (0, 0.4"})
+    CHECK(bad.output.find(part) != std::string::npos);
+  const auto good = run("0.3");
+  INFO(good.output);
+  CHECK(good.exit_code == 0);
+}
+
 TEST_CASE("wheelset-contact: every patch of a wheel is written, however many", "[engine][analysis][contact]") {
   // S1002 with a wavy tread (0.05 mm, 4 mm wavelength) on UIC60 at 100 kN: four patches on a wheel
   // (the CSV held three, and the largest patch, 70 kN, was lost without a word).
