@@ -22,7 +22,6 @@
 #include "core/errors.hpp"
 #include "engine/analysis/track_sampling.hpp"
 #include "results/csv_writer.hpp"
-#include "track/measured_irregularity.hpp"
 #include "track/track_file.hpp"
 
 namespace railsim::cli {
@@ -43,9 +42,7 @@ int run_track(const TrackOptions& o) {
   const track::Track track = track::load_track(o.track_file);
   // The measured-irregularity files the track file names are inputs too:
   // read already, but --out naming one would overwrite it.
-  for (const auto& c : track.irregularities().components())
-    if (const auto* m = dynamic_cast<const track::MeasuredIrregularity*>(c.get()))
-      check_out_against_inputs(o.out, {m->file()});
+  for (const auto& c : track.irregularities().components()) check_out_against_inputs(o.out, c->input_files());
   const double s0 = o.from.value_or(0.0);
   const double s1 = o.to.value_or(track.length());
   if (!(o.step > 0.0) || !std::isfinite(o.step))

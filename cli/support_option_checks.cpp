@@ -147,7 +147,7 @@ void check_out_is_not_input(const std::string& out, const std::string& input) {
                      " itself; writing the results would overwrite it: give another result file");
 }
 
-void check_out_against_inputs(const std::string& out, std::initializer_list<std::string> inputs) {
+void check_out_against_inputs(const std::string& out, const std::vector<std::string>& inputs) {
   std::error_code ec;
   if (out.empty()) return;
   for (const std::string& input : inputs)

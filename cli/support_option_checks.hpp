@@ -7,7 +7,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
-#include <initializer_list>
+#include <vector>
 #include <string>
 
 #include "contact/registry.hpp"
@@ -48,7 +48,7 @@ void check_out_is_not_input(const std::string& out, const std::string& input);
 // The same for every input that names an existing file (profiles, tables,
 // track files: `railsim geometry --wheel w.csv --out w.csv` overwrote the
 // wheel profile); a shipped name (S1002) or an empty option is no file.
-void check_out_against_inputs(const std::string& out, std::initializer_list<std::string> inputs);
+void check_out_against_inputs(const std::string& out, const std::vector<std::string>& inputs);
 
 // "run, critical-speed, ..." in registration order.
 std::string subcommand_names(const CLI::App& app);

@@ -72,6 +72,9 @@ class IrregularityComponent {
   virtual double s_end() const = 0;
   // One line for logs: "defect lateral 10 mm, 20 m at s = 80 m".
   virtual std::string describe() const = 0;
+  // The files this component was read from (none for a synthesised one):
+  // inputs that a result file must not overwrite.
+  virtual std::vector<std::string> input_files() const { return {}; }
 };
 
 // The sum of components: what Track evaluates.

@@ -57,9 +57,8 @@ class MeasuredIrregularity final : public IrregularityComponent {
   double s_begin() const override { return s_begin_; }
   double s_end() const override { return s_end_; }
   std::string describe() const override;
-  // The file read (as resolved against the track file's folder): an input
-  // that a result file must not overwrite (railsim track --out).
-  const std::string& file() const { return file_; }
+  // The file read (as resolved against the track file's folder).
+  std::vector<std::string> input_files() const override { return {file_}; }
 
  private:
   using Spline = boost::math::interpolators::pchip<std::vector<double>>;
