@@ -12,7 +12,12 @@ inline sunindextype length(N_Vector v) { return NV_LENGTH_S(v); }
 
 // z = a x + b y. Where a == b or a == -b (other than +-1) the library
 // factors, z = a (x +- y), which rounds differently; so do we. Every other
-// case (a or b = +-1 included) rounds as a x + b y.
+// case (a or b = +-1 included) rounds as a x + b y. The most called operation
+// (14 times a step): an AVX2 copy on x86-64 (no FMA, so both copies round
+// alike).
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+__attribute__((target_clones("avx2", "default")))
+#endif
 void linear_sum(double a, N_Vector x, double b, N_Vector y, N_Vector z) {
   const sunindextype n = length(z);
   const double* xd = data(x);
