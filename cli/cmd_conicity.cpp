@@ -21,6 +21,12 @@
 
 namespace railsim::cli {
 
+namespace {
+// The amplitudes 1..n mm (n at most 6) whose sweep +-A lies within shifts of
+// +-reach [m]: the ones a table or a shift range can give.
+int amplitudes_within(double reach) { return std::min(6, int(std::floor(reach * 1e3 + 1e-9))); }
+}  // namespace
+
 void register_conicity(CLI::App& app, CommandRunner& run) {
   auto* cmd = app.add_subcommand("conicity", "Equivalent conicity at 1..6 mm amplitude and the delta-r curve");
   auto o = std::make_shared<GeometryOptions>();
@@ -48,7 +54,7 @@ void register_conicity(CLI::App& app, CommandRunner& run) {
       if (!table->empty()) {
         const engine::GeometryTable t(*table);
         auto dr = [&](double y) { return t.main_point(y).rolling_radius - t.main_point(-y).rolling_radius; };
-        const int fitting = std::min(6, int(std::floor(t.max_shift() * 1e3 + 1e-9)));
+        const int fitting = amplitudes_within(t.max_shift());
         if (fitting < 1)
           throw InputError("--table " + *table + ": the table covers shifts up to +-" +
                            config::format_number(t.max_shift() * 1e3) +
@@ -76,8 +82,7 @@ void register_conicity(CLI::App& app, CommandRunner& run) {
       // regression sees the whole delta-r curve over +-A, the result is the conicity at that amplitude),
       // the others are named in a warning; only a range that fits no amplitude is refused. (A range
       // narrower than +-3 mm refused every amplitude, where a table of the same range gave 1 and 2 mm.)
-      const double reach = std::min(-t.grid().y_min, t.grid().y_max);
-      const int fitting = std::min(6, int(std::floor(reach * 1e3 + 1e-9)));
+      const int fitting = amplitudes_within(std::min(-t.grid().y_min, t.grid().y_max));
       if (fitting < 1)
         throw InputError("--y-min/--y-max: the shifts " + config::format_number(t.grid().y_min * 1e3) + " .. " +
                          config::format_number(t.grid().y_max * 1e3) +
