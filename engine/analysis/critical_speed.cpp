@@ -250,8 +250,11 @@ double collapse_speed(const std::vector<double>& t, const std::vector<double>& v
     hunting_at_end = true;  // still oscillating at the end of the ramp
     return std::numeric_limits<double>::quiet_NaN();
   }
-  // Walk back over peaks that decay faster than collapse_rate, measured over
-  // about one second so that the beat between wheelsets does not break the run.
+  // Walk back one peak at a time while the envelope over the second before
+  // the peak decays faster than collapse_rate. The one-second window spans the
+  // beat between wheelsets; stepping by single peaks (not by whole windows)
+  // keeps the reading independent of where a window grid happens to fall, so
+  // a change at the integrator's tolerance level cannot move it by a window.
   auto rate = [&](std::size_t k0, std::size_t k1) {
     const std::size_t i0 = peaks[k0], i1 = peaks[k1];
     return std::log(env[i1] / env[i0]) / (t[i1] - t[i0]);
@@ -261,7 +264,7 @@ double collapse_speed(const std::vector<double>& t, const std::vector<double>& v
     std::size_t j = k;
     while (j > 0 && t[peaks[k]] - t[peaks[j]] < 1.0) --j;
     if (j == k || rate(j, k) > -o.collapse_rate) break;
-    k = j;
+    --k;
   }
   at = static_cast<long>(peaks[k]);
   return v[peaks[k]];
