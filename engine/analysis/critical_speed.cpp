@@ -389,7 +389,8 @@ std::string sweep_settings(const Scenario& scenario, const BifurcationOptions& o
        " initial_step " + num(i.initial_step) + " min_step " + num(i.min_step) + " max_steps " +
        std::to_string(i.max_steps) + " jacobian " + i.jacobian + " linear_solver " + i.linear_solver + " max_order " +
        std::to_string(i.max_order) + " stability_limit_detection " + std::to_string(int(i.stability_limit_detection)) +
-       " atol_contact_modes " + num(i.atol_contact_modes) + "\n";
+       " atol_contact_modes " + num(i.atol_contact_modes) + " jacobian_max_age " + std::to_string(i.jacobian_max_age) +
+       "\n";
   // At a fixed speed (30 m/s), not the sweep's top: sweeps over other speed
   // ranges share the points of their common speeds.
   const Scenario sc = at_speed(scenario, 30.0, 0.0);

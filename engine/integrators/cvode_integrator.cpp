@@ -48,6 +48,8 @@ class CvodeIntegrator final : public SundialsIntegrator {
                    &CVodeGetLinReturnFlagName);
     if (c_.opt.jacobian == "assembled" || c_.opt.linear_solver == "klu")
       c_.check_setup(CVodeSetJacFn(mem_, &SundialsCommon::jac_cb), "CVodeSetJacFn", "", &CVodeGetLinReturnFlagName);
+    c_.check_setup(CVodeSetJacEvalFrequency(mem_, c_.opt.jacobian_max_age), "CVodeSetJacEvalFrequency",
+                   "jacobian_max_age " + std::to_string(c_.opt.jacobian_max_age), &CVodeGetLinReturnFlagName);
   }
   void advance(double t_out, Eigen::VectorXd& x) override {
     const int flag = CVode(mem_, t_out, c_.y, &t_, CV_NORMAL);

@@ -311,7 +311,8 @@ ContactSection read_contact(const InputNode& c, const std::string& base, const t
 // Step: integrator options (integrator.hpp), checked against the run's duration and output interval.
 void read_integrator(const InputNode& in, Scenario& sc) {
   in.allow_only({"method", "rtol", "atol", "max_step", "initial_step", "min_step", "max_steps", "jacobian",
-                 "linear_solver", "max_order", "stability_limit_detection", "atol_contact_modes"});
+                 "linear_solver", "max_order", "stability_limit_detection", "atol_contact_modes",
+                 "jacobian_max_age"});
   auto& o = sc.integrator;
   o.method = in.string_or("method", o.method);
   // Below 1e-12 (about 5000 machine epsilons) the integrators cannot meet rtol
@@ -343,6 +344,7 @@ void read_integrator(const InputNode& in, Scenario& sc) {
   }
   if (in.has("max_steps")) o.max_steps = in.integer_in_range("max_steps", 1, 1000000000);
   if (in.has("max_order")) o.max_order = static_cast<int>(in.integer_in_range("max_order", 1, 5));
+  if (in.has("jacobian_max_age")) o.jacobian_max_age = in.integer_in_range("jacobian_max_age", 1, 1000000);
   if (in.has("atol_contact_modes")) o.atol_contact_modes = in.in_range("atol_contact_modes", 0.0, 1.0);
   if (auto sl = in.find("stability_limit_detection")) o.stability_limit_detection = sl->as_bool();
   o.jacobian = in.choice_or("jacobian", o.jacobian, {"fd", "assembled"});

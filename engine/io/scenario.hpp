@@ -43,6 +43,7 @@
 //                # interval and max_step
 //                max_order: 0, stability_limit_detection: false,  # cvode_bdf: BDF order cap, CVODE's
 //                # detection of the stability limit of orders 3-5 (lightly damped stiff modes)
+//                jacobian_max_age: 400   # cvode_bdf: most steps between Jacobian evaluations, 1..1e6
 //                atol_contact_modes: 0   # [m/s, rad/s] atol of the wheelsets' spin perturbations and
 //                # (full model) vertical and roll velocities; 0 = atol (integrator.hpp)
 //   start_distance must lie on the track ([0, length]); |acceleration| <= 10 m/s^2;
