@@ -191,7 +191,6 @@ void loads_from_shares(const contact::StripSet& s, int jb, int je, const StripWo
                        bool with_patches, PatchShape shape) {
   out.n = 0;
   out.vertical = 0.0;
-  out.dvertical = 0.0;
   int j = jb;
   while (j < je) {
     if (!(x.W[j] > 0.0)) {
@@ -199,7 +198,7 @@ void loads_from_shares(const contact::StripSet& s, int jb, int je, const StripWo
       continue;
     }
     // A run of neighbouring loaded strips: one patch.
-    double N = 0, ang = 0, lat = 0, lead = 0, h = 0, A = 0, rw = 0, vert = 0, dvert = 0, pmax = 0;
+    double N = 0, ang = 0, lat = 0, lead = 0, h = 0, A = 0, rw = 0, vert = 0, pmax = 0;
     int e = j;
     for (;;) {
       const contact::StripPoint q = s[e];
@@ -214,12 +213,10 @@ void loads_from_shares(const contact::StripSet& s, int jb, int je, const StripWo
       rw += W * x.cd[e];
       const double ct = x.cv[e];
       vert += W * ct;
-      dvert += x.dW[e] * ct;
       if (e + 1 < je && s.index[e + 1] == q.index + 1 && x.W[e + 1] > 0.0) ++e;
       else break;
     }
     out.vertical += vert;
-    out.dvertical += dvert;
     if (with_patches && out.n < WheelGeometry::kMaxPoints) {
       ContactPointGeometry& c = out.patch[out.n];
       c = ContactPointGeometry{};
@@ -269,7 +266,8 @@ double strip_approach_for_load(const contact::StripSet& s, double Q, double phi_
   // Z(w) is increasing and convex-ish (0 while nothing is loaded); Newton from
   // a Hertz guess, guarded by bisection on a bracket. Every evaluation is a
   // share pass (the loads of strip_loads() with dphi = 0), so the loads and
-  // patches at the solution come from the last evaluation.
+  // patches at the solution come from the last evaluation (or its linearised
+  // last step).
   const int n = s.n;
   StripWork x;
   strip_columns(s, Es, phi_side, x);
@@ -320,6 +318,19 @@ double strip_approach_for_load(const contact::StripSet& s, double Q, double phi_
     vertical(w, V, dV);
     const double f = V - Q;
     if (std::abs(f) <= 1e-10 * Q) break;
+    // Near enough that the Newton step's remainder, about f^2 / (6 V) for a
+    // Hertzian V ~ (w - w0)^{3/2}, lies below a third of the tolerance: the
+    // last step is taken on the linearised shares (p is linear in w, the
+    // shares W_j to first order) instead of a pass that would confirm it.
+    if (f * f <= 2e-10 * Q * V && dV > 0.0) {
+      const double d = -f / dV;
+      const int e0 = std::max(0, q0 - 1), e1 = std::min(n, q1 + 1);
+      for (int q = e0; q < e1; ++q) cp[q] += d * cc[q];
+      for (int q = q0; q < q1; ++q) x.W[q] = cp[q] > 0.0 ? std::max(0.0, x.W[q] + d * x.dW[q]) : 0.0;
+      w += d;
+      w_filled = w;
+      break;
+    }
     (f > 0.0 ? hi : lo) = w;
     const double next = dV > 0.0 ? w - f / dV : 0.5 * (lo + hi);
     w = (next > lo && next < hi) ? next : 0.5 * (lo + hi);

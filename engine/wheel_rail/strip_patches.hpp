@@ -49,7 +49,6 @@ struct StripLoads {
   ContactPointGeometry patch[WheelGeometry::kMaxPoints];  // semi-axes at the patch's load (N0 = N)
   double N[WheelGeometry::kMaxPoints] = {};
   double vertical = 0.0;    // sum over patches of N cos(delta + side phi_abs) (the wheel's vertical load)
-  double dvertical = 0.0;   // its derivative by w
   double rate_weight[WheelGeometry::kMaxPoints] = {};  // per patch: sum W_j cos(delta_j) (damping)
 };
 
