@@ -56,19 +56,21 @@ void strip_columns(const contact::StripSet& s, double Es, double phi_side, Strip
   // cos(delta): on treads and flange roots (|delta| < 0.25 rad) its Taylor
   // series to delta^12 (truncation below 1e-19, within an ulp or two of
   // std::cos at a fraction of the cost); std::cos beyond (fixed up below).
+  int steep = 0;  // any strip beyond the series' range
   for (int q = 0; q < n; ++q) {
     const double x2 = s.angle[q] * s.angle[q];
     x.cd[q] = 1.0 + x2 * (-1.0 / 2 + x2 * (1.0 / 24 + x2 * (-1.0 / 720 + x2 * (1.0 / 40320 + x2 * (-1.0 / 3628800 +
                                                                                                    x2 / 479001600.0)))));
     x.gap[q] = s.gap[q];
     x.k[q] = 0.5 * s.width * (Es * s.f[q]);
+    steep |= x2 >= 0.0625;
   }
-  for (int q = 0; q < n; ++q)
-    if (std::abs(s.angle[q]) >= 0.25) x.cd[q] = std::cos(s.angle[q]);
-  for (int q = 0; q + 1 < n; ++q) x.lkr[q] = s.index[q + 1] == s.index[q] + 1 ? 1.0 : 0.0;
-  if (n > 0) x.lkr[n - 1] = 0.0;
+  if (steep)
+    for (int q = 0; q < n; ++q)
+      if (std::abs(s.angle[q]) >= 0.25) x.cd[q] = std::cos(s.angle[q]);
   if (n > 0) x.lkl[0] = 0.0;
-  for (int q = 1; q < n; ++q) x.lkl[q] = x.lkr[q - 1];
+  for (int q = 0; q + 1 < n; ++q) x.lkl[q + 1] = x.lkr[q] = s.index[q + 1] == s.index[q] + 1 ? 1.0 : 0.0;
+  if (n > 0) x.lkr[n - 1] = 0.0;
   x.cv = x.cd;
   if (phi_side != 0.0) {
     for (int q = 0; q < n; ++q) x.cvb[q + 1] = std::cos(s.angle[q] + phi_side);
@@ -213,7 +215,7 @@ void loads_from_shares(const contact::StripSet& s, int jb, int je, const StripWo
       rw += W * x.cd[e];
       const double ct = x.cv[e];
       vert += W * ct;
-      if (e + 1 < je && s.index[e + 1] == q.index + 1 && x.W[e + 1] > 0.0) ++e;
+      if (e + 1 < je && x.lkr[e] != 0.0 && x.W[e + 1] > 0.0) ++e;  // (lkr: e + 1 is e's profile neighbour)
       else break;
     }
     out.vertical += vert;
@@ -233,7 +235,7 @@ void loads_from_shares(const contact::StripSet& s, int jb, int je, const StripWo
       const double half = 0.5 * pmax;
       double width = 0.0;
       for (int q = j; q <= e + 1 && q < je; ++q) {  // segments [q-1, q] inside the run and its edges
-        if (q == 0 || s.index[q] != s.index[q - 1] + 1) continue;
+        if (x.lkl[q] == 0.0) continue;  // q - 1 is not q's profile neighbour (or q = 0)
         const double pa = x.p[q - 1] - half, pb = x.p[q] - half;
         if (pa > 0 && pb > 0) width += s.width;
         else if (pa > 0 || pb > 0) width += s.width * std::max(pa, pb) / std::abs(pa - pb);
