@@ -29,6 +29,14 @@ std::vector<double> lateral_history(const engine::Scenario& sc, const engine::In
   if (sum) *sum = s;
   return y;
 }
+// The Cooperrider car (DYTSI's set-up) with the given wheelset model, 2 s.
+engine::Scenario cooperrider_car(const char* wheelset_model) {
+  const std::string path = test::source_path("scenarios/cooperrider_car_dytsi.yaml");
+  YAML::Node node = YAML::LoadFile(path);
+  node["wheelset_model"] = wheelset_model;
+  node["duration"] = 2.0;
+  return engine::load_scenario(config::InputNode(node, path, ""), test::source_path("scenarios"));
+}
 }  // namespace
 
 TEST_CASE("CVODE, ARKODE and Odeint agree on the single wheelset over a lateral defect", "[engine][integrator]") {
@@ -141,13 +149,9 @@ TEST_CASE("Manchester coach on ERRI track: benchmark tolerances against a tight 
 // velocities (full model); every other state keeps atol. A run with the loose
 // contact-mode tolerance stays within 1 % of a tight reference.
 TEST_CASE("contact-mode tolerance reaches spin in both wheelset models, bounce in the full one", "[engine][integrator]") {
-  const std::string path = test::source_path("scenarios/cooperrider_car_dytsi.yaml");
   for (const char* model : {"lateral", "full"}) {
     INFO("wheelset model " << model);
-    YAML::Node node = YAML::LoadFile(path);
-    node["wheelset_model"] = model;
-    node["duration"] = 2.0;
-    const engine::Scenario sc = engine::load_scenario(config::InputNode(node, path, ""), test::source_path("scenarios"));
+    const engine::Scenario sc = cooperrider_car(model);
     engine::Data data(sc.model);
     engine::ModelOde ode(sc.model, data);
     engine::IntegratorOptions o = sc.integrator;
@@ -197,13 +201,9 @@ TEST_CASE("contact-mode tolerance reaches spin in both wheelset models, bounce i
 // against a tight reference (measured: 11 / 21 Jacobians against 70 / 139,
 // lateral / full).
 TEST_CASE("Jacobian age: fewer Jacobians, the same accuracy against a tight reference", "[engine][integrator]") {
-  const std::string path = test::source_path("scenarios/cooperrider_car_dytsi.yaml");
   for (const char* model : {"lateral", "full"}) {
     INFO("wheelset model " << model);
-    YAML::Node node = YAML::LoadFile(path);
-    node["wheelset_model"] = model;
-    node["duration"] = 2.0;
-    const engine::Scenario sc = engine::load_scenario(config::InputNode(node, path, ""), test::source_path("scenarios"));
+    const engine::Scenario sc = cooperrider_car(model);
     engine::IntegratorOptions tight = sc.integrator;
     tight.rtol = 1e-9;
     tight.atol = 1e-11;
