@@ -833,6 +833,8 @@ ScenarioRunResult run_scenario(const Scenario& sc, const ScenarioRunOptions& o) 
   choices.set("max_step", sc.integrator.max_step);
   choices.set("jacobian", sc.integrator.jacobian);
   choices.set("linear_solver", sc.integrator.linear_solver);
+  choices.set("atol_contact_modes", sc.integrator.atol_contact_modes);
+  if (sc.integrator.method == "cvode_bdf") choices.set("jacobian_max_age", sc.integrator.jacobian_max_age);
   summary.set("model_choices", choices);
   summary.set("speed_initial", m.speed.v0);
   summary.set("duration", sc.duration);

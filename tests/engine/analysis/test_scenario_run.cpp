@@ -54,8 +54,13 @@ TEST_CASE("run_scenario: summary.json records rigid rails or the flexible track"
   Scenario rigid = load_scenario(test::source_path("scenarios/single_wheelset.yaml"));
   rigid.duration = 0.05;
   o.out_dir = test::temp_dir("scenario_run_rigid_track");
+  rigid.integrator.method = "cvode_bdf";
+  rigid.integrator.jacobian_max_age = 51;
   run_scenario(rigid, o);
   CHECK(test::read_json(o.out_dir + "/summary.json")["model_choices"]["track_flexibility"] == "rigid rails");
+  // The integrator settings that change results are recorded too.
+  CHECK(test::read_json(o.out_dir + "/summary.json")["model_choices"]["jacobian_max_age"] == 51);
+  CHECK(test::read_json(o.out_dir + "/summary.json")["model_choices"]["atol_contact_modes"] == 0.0);
   Scenario flex = load_scenario(test::source_path("scenarios/manchester_coach_curve_twist.yaml"));
   flex.duration = 0.05;
   o.out_dir = test::temp_dir("scenario_run_flexible_track_lateral");
