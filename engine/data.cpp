@@ -12,6 +12,7 @@ Data::Data(const Model& model)
       rail(model.wheelsets.size()),
       patch(2 * model.wheelsets.size() * WheelGeometry::kMaxPoints),
       strips(2),
+      approach_warm_start(2 * model.wheelsets.size(), 0.0),
       contact_record(model.wheelsets.size()) {
   for (std::size_t i = 0; i < wheel.size(); ++i) workspace.push_back(model.coupling.make_workspace());
   failure.reserve(512);

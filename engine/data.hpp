@@ -104,6 +104,16 @@ struct Data {
   // the strips of the two wheels of the wheelset being evaluated (25 kB each,
   // kept here so that the right-hand side does not clear them on the stack).
   std::vector<contact::StripSet> strips;
+  // Warm starts of the lateral model's load-to-approach solves, 2 per
+  // wheelset (strip_approach_for_load; as MuJoCo's mjData::qacc_warmstart):
+  // each starts from its wheel's last solution, 2.0 instead of 3.8 share
+  // passes a wheel on the ERRI coach, the loads the same as from the default
+  // start within the solve's tolerance (1e-10 of the load). With warm_start
+  // off the solves start from the default and leave these alone, so that an
+  // evaluation does not depend on the ones before it (ModelOde's coloured
+  // differences, whose contact replay is exact to the bit).
+  std::vector<double> approach_warm_start;
+  bool warm_start = true;
   // Contact replay for coloured Jacobian differences (ModelOde): with
   // record_contact set, each wheelset's contribution is kept in
   // contact_record; with reuse_contact set, a wheelset w with

@@ -352,7 +352,14 @@ bool ModelOde::coloured_differences(double t, const double* x, const double* fx,
   for (int j = 0; j < n; ++j) h_[std::size_t(j)] = 1e-7 * std::max(1.0, std::abs(x[j])) + 1e-9;
   // Each colour solves again only the contacts of the wheelsets whose states
   // it perturbs; the others replay the evaluation at (t, x) (the integrator's
-  // last one, as a rule; else it is made here).
+  // last one, as a rule; else it is made here). The evaluations here start
+  // their contact solves cold (Data::warm_start), as a replay would not.
+  struct ColdStarts {
+    Data& d;
+    bool was;
+    ~ColdStarts() { d.warm_start = was; }
+  } cold{data_, data_.warm_start};
+  data_.warm_start = false;
   if (!(recorded_ && t == recorded_t_ && std::equal(x, x + n, recorded_x_.begin())) && !rhs(t, x, fp_.data()))
     return false;
   const std::size_t nw = model_.wheelsets.size();

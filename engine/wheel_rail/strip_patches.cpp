@@ -264,12 +264,12 @@ void loads_from_shares(const contact::StripSet& s, int jb, int je, const StripWo
 __attribute__((target_clones("avx2", "default")))
 #endif
 double strip_approach_for_load(const contact::StripSet& s, double Q, double phi_side, double Es, StripLoads& out,
-                               PatchShape shape) {
-  // Z(w) is increasing and convex-ish (0 while nothing is loaded); Newton from
-  // a Hertz guess, guarded by bisection on a bracket. Every evaluation is a
-  // share pass (the loads of strip_loads() with dphi = 0), so the loads and
-  // patches at the solution come from the last evaluation (or its linearised
-  // last step).
+                               PatchShape shape, double* warm_start) {
+  // V(w) is increasing and convex-ish (0 while nothing is loaded). Steps on
+  // Hertz's law through the last evaluation (below), guarded by bisection once
+  // a bracket is known. Every evaluation is a share pass (the loads of
+  // strip_loads() with dphi = 0), so the loads and patches at the solution
+  // come from the last evaluation (or its linearised last step).
   const int n = s.n;
   StripWork x;
   strip_columns(s, Es, phi_side, x);
@@ -277,45 +277,30 @@ double strip_approach_for_load(const contact::StripSet& s, double Q, double phi_
   double* cp = x.p;
   double vmin = 1e9;  // vertical approach at which the first strip touches (g_j / cos >= g_j)
   for (int q = 0; q < n; ++q) vmin = std::min(vmin, cg[q] / cc[q]);
-  // The shares over strips [q0, q1) (their neighbours' penetrations made first).
-  int q0 = 0, q1 = n;
+  // Penetrations over strips [q0, q1) and one neighbour on each side; shares
+  // over the penetrated ones among them, [pa, pb) (the others carry none); the
+  // loads are read from these and their unloaded neighbours.
+  int q0 = 0, q1 = n, pa = 0, pb = 0;
   double w_filled = std::numeric_limits<double>::quiet_NaN();  // the w the shares hold
   auto vertical = [&](double w, double& V, double& dV) {
     const int e0 = std::max(0, q0 - 1), e1 = std::min(n, q1 + 1);
     for (int q = e0; q < e1; ++q) cp[q] = w * cc[q] - cg[q];
-    share_pass(x.p, x.cd, x.k, x.lkl, x.lkr, x.cv, x.W, x.dW, q0, q1, V, dV);
+    pa = q0;
+    pb = q1;
+    while (pa < pb && !(cp[pa] > 0.0)) ++pa;
+    while (pb > pa && !(cp[pb - 1] > 0.0)) --pb;
+    V = dV = 0.0;
+    if (pa < pb) share_pass(x.p, x.cd, x.k, x.lkl, x.lkr, x.cv, x.W, x.dW, pa, pb, V, dV);
+    if (pa > 0) x.W[pa - 1] = 0.0;  // the unloaded neighbours (read by the patches' edges)
+    if (pb < n) x.W[pb] = 0.0;
     w_filled = w;
   };
-  double lo = vmin, hi = vmin + 1e-4, Vhi = 0.0, dV = 0.0;
-  for (int it = 0; it < 40; ++it) {  // grow the bracket until it carries Q
-    vertical(hi, Vhi, dV);
-    if (Vhi >= Q) break;
-    lo = hi;
-    hi = vmin + 2.0 * (hi - vmin);
-  }
-  // Below hi only strips penetrated at hi can be (p grows with w): the
-  // iterations run on those and one neighbour on each side.
-  {
-    int a = n, b = -1;
-    for (int q = 0; q < n; ++q)
-      if (cp[q] > 0.0) {
-        a = std::min(a, q);
-        b = q;
-      }
-    if (b >= 0) {
-      q0 = std::max(0, a - 1);
-      q1 = std::min(n, b + 2);
-    }
-  }
-  // First guess: Hertz's V = K (w - w0)^{3/2} through the bracket's top with
-  // its slope there (w0 = hi - 1.5 V / V'; w0 = vmin without a slope).
-  double w = hi;
-  if (Vhi > Q && Vhi > 0.0) {
-    const double w0 = dV > 0.0 ? std::max(vmin, hi - 1.5 * Vhi / dV) : vmin;
-    const double guess = w0 + (hi - w0) * std::cbrt((Q / Vhi) * (Q / Vhi));
-    if (guess > lo && guess < hi) w = guess;
-  }
-  for (int it = 0; it < 80; ++it) {
+  // Start: the caller's warm start (this wheel's approach above its first
+  // touching strip at the last solve), else 0.1 mm above the first touch.
+  const double inf = std::numeric_limits<double>::infinity();
+  double lo = vmin, hi = inf, dV = 0.0;
+  double w = vmin + (warm_start && *warm_start > 0.0 ? *warm_start : 1e-4);
+  for (int it = 0; it < 100; ++it) {
     double V;
     vertical(w, V, dV);
     const double f = V - Q;
@@ -328,21 +313,48 @@ double strip_approach_for_load(const contact::StripSet& s, double Q, double phi_
       const double d = -f / dV;
       const int e0 = std::max(0, q0 - 1), e1 = std::min(n, q1 + 1);
       for (int q = e0; q < e1; ++q) cp[q] += d * cc[q];
-      for (int q = q0; q < q1; ++q) x.W[q] = cp[q] > 0.0 ? std::max(0.0, x.W[q] + d * x.dW[q]) : 0.0;
+      for (int q = pa; q < pb; ++q) x.W[q] = cp[q] > 0.0 ? std::max(0.0, x.W[q] + d * x.dW[q]) : 0.0;
       w += d;
       w_filled = w;
       break;
     }
-    (f > 0.0 ? hi : lo) = w;
-    const double next = dV > 0.0 ? w - f / dV : 0.5 * (lo + hi);
-    w = (next > lo && next < hi) ? next : 0.5 * (lo + hi);
+    if (f > 0.0) {
+      // The first upper bound: below it only strips penetrated there can be
+      // (p grows with w); the passes run on those and one neighbour each side.
+      if (hi == inf) {
+        int a = n, b = -1;
+        for (int q = 0; q < n; ++q)
+          if (cp[q] > 0.0) {
+            a = std::min(a, q);
+            b = q;
+          }
+        if (b >= 0) {
+          q0 = std::max(0, a - 1);
+          q1 = std::min(n, b + 2);
+        }
+      }
+      hi = w;
+    } else {
+      lo = w;
+    }
+    // Next: Hertz's V = K (w - w0)^{3/2} through (w, V) with its slope there
+    // (w0 = w - 1.5 V / V'), solved for Q; bisection where that leaves the
+    // bracket, doubling the approach while there is no upper bound.
+    double next = lo;
+    if (V > 0.0 && dV > 0.0) {
+      const double w0 = w - 1.5 * V / dV;
+      next = w0 + (w - w0) * std::cbrt((Q / V) * (Q / V));
+    }
+    if (!(next > lo && next < hi)) next = hi < inf ? 0.5 * (lo + hi) : vmin + 2.0 * (std::max(w, lo) - vmin);
+    w = next;
     if (hi - lo < 1e-15) break;
   }
   if (!(w_filled == w)) {  // stopped on the bracket's width: the shares at the last w
     double V;
     vertical(w, V, dV);
   }
-  loads_from_shares(s, q0, q1, x, out, true, shape);
+  loads_from_shares(s, std::max(0, pa - 1), std::min(n, pb + 1), x, out, true, shape);
+  if (warm_start) *warm_start = w - vmin;
   return w;
 }
 

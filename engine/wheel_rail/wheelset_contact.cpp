@@ -208,10 +208,11 @@ bool distributed_loads(const Model& model, Data& d, int w, const WheelsetKinemat
   for (int i = 0; i < 2; ++i) {
     if (!(Qlat[i] > 0.0)) return lateral_loss_of_contact(d, ws, i, Qlat[i]);
     // Loaded strips have gap < w cos(delta) <= w: fetched unless w reached the cutoff.
-    if (strip_approach_for_load(strips[i], Qlat[i], 0.0, Es, L, model.patch_shape) >= kLateralFirstCutoff) {
+    double* warm = d.warm_start ? &d.approach_warm_start[2 * std::size_t(w) + std::size_t(i)] : nullptr;
+    if (strip_approach_for_load(strips[i], Qlat[i], 0.0, Es, L, model.patch_shape, warm) >= kLateralFirstCutoff) {
       const int side = i == 0 ? 1 : -1;
       geo.strips(side * k.y, side * k.psi, kStripGapCutoff, strips[i]);
-      strip_approach_for_load(strips[i], Qlat[i], 0.0, Es, L, model.patch_shape);
+      strip_approach_for_load(strips[i], Qlat[i], 0.0, Es, L, model.patch_shape, warm);
     }
     patches_to_points(L, mat, g[i], N[i]);
   }

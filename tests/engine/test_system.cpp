@@ -118,8 +118,10 @@ TEST_CASE("coloured Jacobian with contact replay equals plain coloured differenc
       REQUIRE(ode.sparse_jacobian(t, x.data(), fx.data(), replayed.data()));
       REQUIRE(ode.rhs(t, xother.data(), fother.data()));  // the last evaluation elsewhere
       REQUIRE(ode.sparse_jacobian(t, x.data(), fx.data(), again.data()));
-      // Plain coloured differences, every contact solved, on a Data of its own.
+      // Plain coloured differences, every contact solved, on a Data of its own,
+      // its solves started cold as the Jacobian's are (Data::warm_start).
       engine::Data d2(sc.model);
+      d2.warm_start = false;
       Eigen::VectorXd xp(n), fp(n);
       for (int c = 0; c < p.colors; ++c) {
         xp = x;

@@ -407,15 +407,16 @@ TEST_CASE("profile geometry: patch areas in tread contact against CONTACT, both 
 }
 
 // The lateral model's load-to-approach solve (strip_approach_for_load: its
-// Newton evaluations run on the strips penetrated at the bracket's top only,
+// evaluations run on the strips penetrated at the first upper bound only,
 // and the last one yields the loads) against strip_loads over every strip at
 // the approach it returns: it carries the load asked for (1e-9), on the
 // S1002/UIC60 strips from the tread to the flange (one and two patches), both
 // wheels' sides of the table (y of either sign), with yaw, a rolled vertical
-// direction and both patch shapes: the same patches, loads and ellipses.
+// direction and both patch shapes: the same patches, loads and ellipses; also
+// from warm starts.
 TEST_CASE("profile geometry: load-to-approach solve equals the load pass at its approach", "[engine][geometry][strips]") {
   const ProfileGeometry& g = shared_geometry();
-  int two_patch = 0, compared = 0;
+  int two_patch = 0, compared = 0, warm = 0;
   for (double y_mm = -12.0; y_mm <= 12.0; y_mm += 0.37) {
     for (double yaw : {0.0, 0.012}) {
       contact::StripSet s;
@@ -442,9 +443,32 @@ TEST_CASE("profile geometry: load-to-approach solve equals the load pass at its 
             }
             two_patch += L.n >= 2;
             ++compared;
+            // Warm starts (Data::approach_warm_start) below, at and above the
+            // solution, near and far: the same approach and loads, and the
+            // start handed back is the solution's.
+            double exact = 0.0;
+            strip_approach_for_load(s, Q, phi, g.contact_modulus(), R, shape, &exact);
+            REQUIRE(exact > 0.0);
+            for (double f : {0.3, 0.97, 1.0, 1.03, 3.0}) {
+              INFO("warm start " << f << " x the solution's");
+              double start = f * exact;
+              StripLoads Lw;
+              const double ww = strip_approach_for_load(s, Q, phi, g.contact_modulus(), Lw, shape, &start);
+              CHECK(ww == Approx(w).epsilon(1e-9));
+              CHECK(start == Approx(exact).epsilon(1e-8));
+              CHECK(Lw.vertical == Approx(Q).epsilon(1e-9));
+              REQUIRE(Lw.n == L.n);
+              for (int k = 0; k < L.n; ++k) {
+                CHECK(Lw.N[k] == Approx(L.N[k]).epsilon(1e-9));
+                CHECK(Lw.patch[k].semi_a == Approx(L.patch[k].semi_a).epsilon(1e-9));
+                CHECK(Lw.patch[k].semi_b == Approx(L.patch[k].semi_b).epsilon(1e-9));
+              }
+              ++warm;
+            }
           }
     }
   }
   CHECK(compared > 1500);
+  CHECK(warm == 5 * compared);
   CHECK(two_patch > 0);
 }
