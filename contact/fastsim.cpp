@@ -33,18 +33,9 @@ int StripGrid::size_option(const TangentialModelOptions& options, const char* mo
   return options.grid;
 }
 
-ContactForces strip_model_result(const char* model, const ContactInput& in, const StripSums& sums) {
-  const double Fx = sums.Fx, Fy = sums.Fy, Mz = sums.Mz, stick_area = sums.stick, area = sums.area;
-  if (!std::isfinite(Fx) || !std::isfinite(Fy) || !std::isfinite(Mz))
-    throw NumericalError(std::string(model) + ": non-finite creep force (a = " + std::to_string(in.patch.a) +
-                         " m, b = " + std::to_string(in.patch.b) + " m, Fz = " + std::to_string(in.patch.Fz) +
-                         " N)");
-  ContactForces out;
-  out.Fx = Fx;
-  out.Fy = Fy;
-  out.Mz = Mz;
-  out.stick_fraction = area > 0.0 ? stick_area / area : 1.0;
-  return out;
+void throw_non_finite_strip_force(const char* model, const ContactInput& in) {
+  throw NumericalError(std::string(model) + ": non-finite creep force (a = " + std::to_string(in.patch.a) +
+                       " m, b = " + std::to_string(in.patch.b) + " m, Fz = " + std::to_string(in.patch.Fz) + " N)");
 }
 
 StripGrid StripGrid::make(int nx, int ny, GridSpacing spacing_x, GridSpacing spacing_y) {
@@ -175,17 +166,31 @@ ContactForces Fastsim::compute(const ContactInput& in, TangentialWorkspace* /*ws
   const double Fz = in.patch.Fz;
   const double G = in.material.shear_modulus();
   const KalkerCoefficients C = kalker_coefficients(a / b, in.material.nu);
-  double L1 = 8.0 * a / (3.0 * G * C.C11 * in.reduction.k11);
-  double L2 = 8.0 * a / (3.0 * G * C.C22 * in.reduction.k22);
-  double L3 = kPi * a * std::sqrt(a / b) / (4.0 * G * C.C23 * in.reduction.k23);
-  if (options_.flexibility == FastsimFlexibility::blended) blend(in, L1, L2, L3);
+  // Traction gradients from xi [Pa/m], from eta, and from spin per metre of
+  // lever arm [Pa/m^2]: xi / L1, eta / L2, phi / L3.
+  double sx, sy, sp;
+  if (options_.flexibility == FastsimFlexibility::blended) {
+    double L1 = 8.0 * a / (3.0 * G * C.C11 * in.reduction.k11);
+    double L2 = 8.0 * a / (3.0 * G * C.C22 * in.reduction.k22);
+    double L3 = kPi * a * std::sqrt(a / b) / (4.0 * G * C.C23 * in.reduction.k23);
+    blend(in, L1, L2, L3);
+    sx = in.creep.xi / L1;
+    sy = in.creep.eta / L2;
+    sp = in.creep.phi / L3;
+  } else {
+    // Kalker's flexibilities: xi / L1 = xi (3 G k11 / 8a) C11 and alike, the
+    // factors before C computed while kalker_coefficients runs, so that its
+    // result meets one multiplication instead of two chained divisions (the
+    // chain from a/b to the march is the call's critical path; equal to rounding).
+    const double f12 = 3.0 * G / (8.0 * a), f3 = 4.0 * G / (kPi * a * std::sqrt(a / b));
+    sx = in.creep.xi * (f12 * in.reduction.k11) * C.C11;
+    sy = in.creep.eta * (f12 * in.reduction.k22) * C.C22;
+    sp = in.creep.phi * (f3 * in.reduction.k23) * C.C23;
+  }
   const double p0 = ((options_.bound == TractionBound::elliptic) ? 3.0 * Fz / (2.0 * kPi * a * b)
                                                                  : 2.0 * Fz / (kPi * a * b)) *
                     load_scale_;
   const double gmax = in.material.mu * p0;
-  const double sx = in.creep.xi / L1;    // traction gradient from xi [Pa/m]
-  const double sy = in.creep.eta / L2;   // from eta
-  const double sp = in.creep.phi / L3;   // from spin, per metre of lever arm [Pa/m^2]
 
   const auto nx = static_cast<std::size_t>(grid_.nx);
   const auto ny = static_cast<std::size_t>(grid_.ny);

@@ -161,10 +161,25 @@ void for_strip_groups(std::size_t ny, Group&& group) {
   }
 }
 
+// NumericalError for a non-finite strip-model force, naming the model and the
+// patch (out of line: strip_model_result's fast path then needs no stack frame).
+[[noreturn]] void throw_non_finite_strip_force(const char* model, const ContactInput& in);
+
 // Result of a strip model from its sums over the strips (forces, moment, stick
 // and total area); NumericalError naming the model and the patch when a force
-// is not finite.
-ContactForces strip_model_result(const char* model, const ContactInput& in, const StripSums& sums);
+// is not finite. One test for the three: x * 0 is +-0 for a finite x and NaN for
+// an infinity or NaN, and a sum of zeros is zero (FASTSIM 5 x 5: the three
+// isfinite tests and the out-of-line call cost 3-4 ns of a 160 ns call).
+inline ContactForces strip_model_result(const char* model, const ContactInput& in, const StripSums& sums) {
+  if (!(sums.Fx * 0.0 + sums.Fy * 0.0 + sums.Mz * 0.0 == 0.0)) [[unlikely]]
+    throw_non_finite_strip_force(model, in);
+  ContactForces out;
+  out.Fx = sums.Fx;
+  out.Fy = sums.Fy;
+  out.Mz = sums.Mz;
+  out.stick_fraction = sums.area > 0.0 ? sums.stick / sums.area : 1.0;
+  return out;
+}
 
 struct FastsimOptions {
   int nx = 20;  // elements per strip (rolling direction)

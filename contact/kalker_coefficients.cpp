@@ -151,13 +151,10 @@ double blend(double asym_g, double asym_edge, double table_edge, double g) {
 
 }  // namespace
 
-// On x86-64 a second copy for processors with AVX2 (GCC's target_clones, as
-// StripContactTable::strips): the 12 series and the four nu-combinations four
-// to an instruction; no FMA, so both copies round alike (callgrind: 290 -> 213
-// instructions a call with the Hermite step and combine() inlined).
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-__attribute__((target_clones("avx2", "default")))
-#endif
+// One copy, without an AVX2 clone (target_clones, eacdef2): the clone ran fewer
+// instructions, but the call is a chain of dependent operations (log, two
+// divisions), and with the clone's indirect call, 32-byte stack alignment and
+// 256-bit divide FASTSIM (Kalker) 5 x 5 took 5 ns longer a call.
 KalkerCoefficients kalker_coefficients(double a_over_b, double nu) {
   if (!(std::isfinite(a_over_b) && a_over_b > 0.0)) {
     char buf[48];

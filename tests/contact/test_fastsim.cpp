@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "contact/fastsim.hpp"
@@ -201,4 +202,25 @@ TEST_CASE("FASTSIM is registered as fastsim and honours the grid option", "[fast
   CHECK_THROWS_AS(make_tangential_model("fastsim", o), railsim::InputError);
   o.grid = 5000;
   CHECK_THROWS_AS(make_tangential_model("fastsim", o), railsim::InputError);
+}
+
+TEST_CASE("Strip models' result refuses a non-finite force or moment and nothing else", "[fastsim][input]") {
+  // strip_model_result tests the three sums at once (x * 0 is NaN only for an
+  // infinity or NaN): each of Fx, Fy, Mz non-finite alone throws; large finite
+  // sums, whose sum overflows, do not.
+  const ContactInput in = patch_input(6e-3, 4e-3);
+  const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+  for (const double bad : {inf, -inf, nan})
+    for (int i = 0; i < 3; ++i) {
+      StripSums s{1.0, -2.0, 3.0, 1.0, 0.5};
+      (i == 0 ? s.Fx : i == 1 ? s.Fy : s.Mz) = bad;
+      INFO("sum " << i << " = " << bad);
+      CHECK_THROWS_WITH(strip_model_result("fastsim", in, s), Catch::Contains("fastsim: non-finite creep force"));
+    }
+  const double big = std::numeric_limits<double>::max();
+  const ContactForces f = strip_model_result("fastsim", in, StripSums{big, big, -big, 2.0, 1.0});
+  CHECK(f.Fx == big);
+  CHECK(f.Mz == -big);
+  CHECK(f.stick_fraction == 0.5);
+  CHECK(strip_model_result("fastsim", in, StripSums{0.0, -0.0, 0.0, 0.0, 0.0}).stick_fraction == 1.0);
 }
