@@ -34,6 +34,7 @@ RunSummary simulate(const Model& model, const IntegratorOptions& options, const 
   const auto start = std::chrono::steady_clock::now();
   const double cpu0 = thread_cpu_seconds();
   auto report = [&](double t) {
+    rec.approach_warm_start = data.approach_warm_start;  // the integrator's latest solves start the output's
     rhs_or_throw(model, rec, t, x.data(), xdot.data());
     rec.xdot = xdot;  // same size every time: no allocation after the first output
     for (std::size_t w = 0; w < model.wheelsets.size(); ++w) {

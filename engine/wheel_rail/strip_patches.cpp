@@ -275,8 +275,10 @@ double strip_approach_for_load(const contact::StripSet& s, double Q, double phi_
   strip_columns(s, Es, phi_side, x);
   const double *cc = x.cd, *cg = x.gap;
   double* cp = x.p;
-  double vmin = 1e9;  // vertical approach at which the first strip touches (g_j / cos >= g_j)
-  for (int q = 0; q < n; ++q) vmin = std::min(vmin, cg[q] / cc[q]);
+  // The smallest gap: nothing is loaded below it (strip j touches at the
+  // approach g_j / cos(delta_j) >= g_j); the reference of the warm start.
+  double vmin = 1e9;
+  for (int q = 0; q < n; ++q) vmin = std::min(vmin, cg[q]);
   // Penetrations over strips [q0, q1) and one neighbour on each side; shares
   // over the penetrated ones among them, [pa, pb) (the others carry none); the
   // loads are read from these and their unloaded neighbours.
@@ -295,8 +297,8 @@ double strip_approach_for_load(const contact::StripSet& s, double Q, double phi_
     if (pb < n) x.W[pb] = 0.0;
     w_filled = w;
   };
-  // Start: the caller's warm start (this wheel's approach above its first
-  // touching strip at the last solve), else 0.1 mm above the first touch.
+  // Start: the caller's warm start (this wheel's approach above its smallest
+  // gap at the last solve), else 0.1 mm above that gap.
   const double inf = std::numeric_limits<double>::infinity();
   double lo = vmin, hi = inf, dV = 0.0;
   double w = vmin + (warm_start && *warm_start > 0.0 ? *warm_start : 1e-4);
