@@ -142,6 +142,7 @@ EquilibriumResult newton_equilibrium(const Model& model, const Eigen::VectorXd& 
   const Problem p = make_problem(model, hold_wheelsets);
   const int n = p.n, m = p.m;
   Data d(model);
+  d.warm_start = false;  // an equilibrium of the state alone, not of the evaluations before (Data::warm_start)
   ModelOde ode(model, d);
   r.x = start;
   for (const auto& b : model.bodies)  // at rest
@@ -224,6 +225,7 @@ EquilibriumResult pseudo_transient_equilibrium(const Model& model, const Eigen::
   const Problem p = make_problem(model);
   const int n = p.n;
   Data d(model);
+  d.warm_start = false;  // as newton_equilibrium
   ModelOde ode(model, d);
   r.x = start;
   Eigen::VectorXd f(n), f_next(n), x_next(n);

@@ -14,6 +14,7 @@ namespace railsim::engine {
 Eigen::MatrixXd state_jacobian(const Model& model, const Eigen::VectorXd& x0, double t) {
   const int n = model.n_states;
   Data d(model);
+  d.warm_start = false;  // central differences of history-free evaluations (Data::warm_start)
   Eigen::MatrixXd J(n, n);
   Eigen::VectorXd xp = x0, fp(n), fm(n);
   for (int j = 0; j < n; ++j) {

@@ -353,7 +353,8 @@ bool ModelOde::coloured_differences(double t, const double* x, const double* fx,
   // Each colour solves again only the contacts of the wheelsets whose states
   // it perturbs; the others replay the evaluation at (t, x) (the integrator's
   // last one, as a rule; else it is made here). The evaluations here start
-  // their contact solves cold (Data::warm_start), as a replay would not.
+  // their contact solves cold (Data::warm_start): each is a function of its
+  // state alone, the same to the bit as a plain evaluation there.
   struct ColdStarts {
     Data& d;
     bool was;

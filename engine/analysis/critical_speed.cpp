@@ -395,6 +395,7 @@ std::string sweep_settings(const Scenario& scenario, const BifurcationOptions& o
   // ranges share the points of their common speeds.
   const Scenario sc = at_speed(scenario, 30.0, 0.0);
   Data data(sc.model);
+  data.warm_start = false;  // the bits of each evaluation, not of the one before (Data::warm_start)
   Eigen::VectorXd xdot(sc.model.n_states);
   ContentHash h;
   for (const Eigen::VectorXd& x : {disturbed_state(sc, o.large_disturbance), Eigen::VectorXd(sc.x0)}) {
