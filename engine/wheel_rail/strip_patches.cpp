@@ -232,14 +232,24 @@ void loads_from_shares(const contact::StripSet& s, int jb, int je, const StripWo
       // sqrt(p_max / (2 B_e)); then Hertz's semi-axes for (A, B_e) at the
       // approach p_max, a = alpha sqrt(p_max/A), b = beta sqrt(p_max/B_e)
       // (exact for a quadratic gap).
+      // Segments [q-1, q] inside the run and at its edges, where q - 1 is q's
+      // profile neighbour (lkl): the part above half, 1 where both ends are,
+      // max / |difference| where one is (no branches; the last in lane 0).
       const double half = 0.5 * pmax;
-      double width = 0.0;
-      for (int q = j; q <= e + 1 && q < je; ++q) {  // segments [q-1, q] inside the run and its edges
-        if (x.lkl[q] == 0.0) continue;  // q - 1 is not q's profile neighbour (or q = 0)
+      constexpr int L = StripWork::kLanes;
+      double wl[L] = {};
+      auto segment = [&](int q, int l) __attribute__((always_inline)) {
         const double pa = x.p[q - 1] - half, pb = x.p[q] - half;
-        if (pa > 0 && pb > 0) width += s.width;
-        else if (pa > 0 || pb > 0) width += s.width * std::max(pa, pb) / std::abs(pa - pb);
-      }
+        const double top = std::max(pa, pb), diff = std::abs(pa - pb);
+        const double part = top >= diff ? 1.0 : top / std::max(diff, 1e-300);
+        wl[l] += top > 0.0 ? x.lkl[q] * part : 0.0;
+      };
+      const int qe = std::min(e + 1, je - 1);
+      int q = j;
+      for (; q + L - 1 <= qe; q += L)
+        for (int l = 0; l < L; ++l) segment(q + l, l);
+      for (; q <= qe; ++q) segment(q, 0);
+      const double width = s.width * ((wl[0] + wl[1]) + (wl[2] + wl[3]));
       if (c.A > 0.0 && width > 0.0 && pmax > 0.0) {
         const double Be = 2.0 * pmax / (width * width);
         double alpha = 0.0, beta = 0.0;

@@ -190,18 +190,33 @@ bool distributed_loads(const Model& model, Data& d, int w, const WheelsetKinemat
   for (int i = 0; i < 2; ++i) {
     const int side = i == 0 ? 1 : -1;
     geo.strips(side * k.y, side * k.psi, kLateralFirstCutoff, strips[i]);
-    double num = 0.0, den = 0.0, vmin = 1e9, amin = geo.l0();
     const contact::StripSet& set = strips[i];
-    for (int j = 0; j < set.n; ++j) {  // (written with selects, not branches: the same sums)
-      const double gap = set.gap[j], lat = set.lateral[j];
-      const double u = std::max(0.0, 1.0 - gap / 2e-4);
-      num += u * u * lat;
-      den += u * u;
-      const bool lower = gap < vmin;
-      vmin = lower ? gap : vmin;
-      amin = lower ? lat : amin;
+    // Sums in four lanes over whole groups of strips (vectorised), the rest
+    // in the first; 1 / 0.2 mm = 5000 1/m.
+    constexpr int kLanes = 4;
+    double nu[kLanes] = {}, de[kLanes] = {};
+    auto add = [&](int j, int l) __attribute__((always_inline)) {
+      const double u = std::max(0.0, 1.0 - set.gap[j] * 5e3);
+      nu[l] += u * u * set.lateral[j];
+      de[l] += u * u;
+    };
+    int j = 0;
+    for (; j + kLanes <= set.n; j += kLanes)
+      for (int l = 0; l < kLanes; ++l) add(j + l, l);
+    for (; j < set.n; ++j) add(j, 0);
+    const double num = (nu[0] + nu[1]) + (nu[2] + nu[3]), den = (de[0] + de[1]) + (de[2] + de[3]);
+    if (den > 0.0) {
+      a[i] = num / den;
+      continue;
     }
-    a[i] = den > 0.0 ? num / den : amin;
+    // No strip within 0.2 mm: the nearest one's position (else the nominal).
+    double vmin = 1e9;
+    a[i] = geo.l0();
+    for (int q = 0; q < set.n; ++q)
+      if (set.gap[q] < vmin) {
+        vmin = set.gap[q];
+        a[i] = set.lateral[q];
+      }
   }
   Qlat[0] = (S * a[1] + D) / (a[0] + a[1]);
   Qlat[1] = (S * a[0] - D) / (a[0] + a[1]);
