@@ -69,7 +69,11 @@ void strip_columns(const contact::StripSet& s, double Es, double phi_side, Strip
     for (int q = 0; q < n; ++q)
       if (std::abs(s.angle[q]) >= 0.25) x.cd[q] = std::cos(s.angle[q]);
   if (n > 0) x.lkl[0] = 0.0;
-  for (int q = 0; q + 1 < n; ++q) x.lkl[q + 1] = x.lkr[q] = s.index[q + 1] == s.index[q] + 1 ? 1.0 : 0.0;
+  if (n > 0 && s.index[n - 1] - s.index[0] == n - 1) {  // one run of consecutive strips (the rule)
+    for (int q = 0; q + 1 < n; ++q) x.lkl[q + 1] = x.lkr[q] = 1.0;
+  } else {
+    for (int q = 0; q + 1 < n; ++q) x.lkl[q + 1] = x.lkr[q] = s.index[q + 1] == s.index[q] + 1 ? 1.0 : 0.0;
+  }
   if (n > 0) x.lkr[n - 1] = 0.0;
   x.cv = x.cd;
   if (phi_side != 0.0) {
@@ -287,8 +291,10 @@ double strip_approach_for_load(const contact::StripSet& s, double Q, double phi_
   double* cp = x.p;
   // The smallest gap: nothing is loaded below it (strip j touches at the
   // approach g_j / cos(delta_j) >= g_j); the reference of the warm start.
-  double vmin = 1e9;
-  for (int q = 0; q < n; ++q) vmin = std::min(vmin, cg[q]);
+  double vm[StripWork::kLanes] = {1e9, 1e9, 1e9, 1e9};  // (four lanes: vectorised; the pads' gaps are 1 m)
+  for (int g = 0; g < n; g += StripWork::kLanes)
+    for (int l = 0; l < StripWork::kLanes; ++l) vm[l] = std::min(vm[l], cg[g + l]);
+  const double vmin = std::min(std::min(vm[0], vm[1]), std::min(vm[2], vm[3]));
   // Penetrations over strips [q0, q1) and one neighbour on each side; shares
   // over the penetrated ones among them, [pa, pb) (the others carry none); the
   // loads are read from these and their unloaded neighbours.
