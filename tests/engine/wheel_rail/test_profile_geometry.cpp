@@ -406,6 +406,21 @@ TEST_CASE("profile geometry: patch areas in tread contact against CONTACT, both 
   CHECK(worst[1] < 0.08);
 }
 
+namespace {
+// The same patches to 1e-9: loads, ellipses, angles, positions, rate weights.
+void check_same_patches(const StripLoads& a, const StripLoads& b) {
+  REQUIRE(a.n == b.n);
+  for (int k = 0; k < a.n; ++k) {
+    CHECK(a.N[k] == Approx(b.N[k]).epsilon(1e-9));
+    CHECK(a.patch[k].semi_a == Approx(b.patch[k].semi_a).epsilon(1e-9));
+    CHECK(a.patch[k].semi_b == Approx(b.patch[k].semi_b).epsilon(1e-9));
+    CHECK(a.patch[k].contact_angle == Approx(b.patch[k].contact_angle).epsilon(1e-9).margin(1e-12));
+    CHECK(a.patch[k].lateral == Approx(b.patch[k].lateral).epsilon(1e-9));
+    CHECK(a.rate_weight[k] == Approx(b.rate_weight[k]).epsilon(1e-9));
+  }
+}
+}  // namespace
+
 // The lateral model's load-to-approach solve (strip_approach_for_load: its
 // evaluations run on the strips penetrated at the first upper bound only,
 // and the last one yields the loads) against strip_loads over every strip at
@@ -432,15 +447,7 @@ TEST_CASE("profile geometry: load-to-approach solve equals the load pass at its 
             INFO("y " << y_mm << " mm, yaw " << yaw << ", Q " << Q << " N, roll " << phi);
             CHECK(L.vertical == Approx(Q).epsilon(1e-9));
             CHECK(R.vertical == Approx(Q).epsilon(1e-9));
-            REQUIRE(L.n == R.n);
-            for (int k = 0; k < L.n; ++k) {
-              CHECK(L.N[k] == Approx(R.N[k]).epsilon(1e-9));
-              CHECK(L.patch[k].semi_a == Approx(R.patch[k].semi_a).epsilon(1e-9));
-              CHECK(L.patch[k].semi_b == Approx(R.patch[k].semi_b).epsilon(1e-9));
-              CHECK(L.patch[k].contact_angle == Approx(R.patch[k].contact_angle).epsilon(1e-9).margin(1e-12));
-              CHECK(L.patch[k].lateral == Approx(R.patch[k].lateral).epsilon(1e-9));
-              CHECK(L.rate_weight[k] == Approx(R.rate_weight[k]).epsilon(1e-9));
-            }
+            check_same_patches(L, R);
             two_patch += L.n >= 2;
             ++compared;
             // Warm starts (Data::approach_warm_start) below, at and above the
@@ -457,12 +464,7 @@ TEST_CASE("profile geometry: load-to-approach solve equals the load pass at its 
               CHECK(ww == Approx(w).epsilon(1e-9));
               CHECK(start == Approx(exact).epsilon(1e-8));
               CHECK(Lw.vertical == Approx(Q).epsilon(1e-9));
-              REQUIRE(Lw.n == L.n);
-              for (int k = 0; k < L.n; ++k) {
-                CHECK(Lw.N[k] == Approx(L.N[k]).epsilon(1e-9));
-                CHECK(Lw.patch[k].semi_a == Approx(L.patch[k].semi_a).epsilon(1e-9));
-                CHECK(Lw.patch[k].semi_b == Approx(L.patch[k].semi_b).epsilon(1e-9));
-              }
+              check_same_patches(Lw, L);
               ++warm;
             }
           }
