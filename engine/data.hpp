@@ -110,9 +110,9 @@ struct Data {
   // passes a wheel on the ERRI coach, the loads the same as from the default
   // start within the solve's tolerance (1e-10 of the load). With warm_start
   // off the solves start from the default and leave these alone, so that an
-  // evaluation does not depend on the ones before it: ModelOde's coloured
-  // differences (whose contact replay is exact to the bit), the linearisation,
-  // the equilibrium start and the sweep cache's model hash.
+  // evaluation does not depend on the ones before it: the linearisation, the
+  // equilibrium start and the sweep cache's model hash. (ModelOde's coloured
+  // differences start every colour where their base evaluation started.)
   std::vector<double> approach_warm_start;
   bool warm_start = true;
   // Contact replay for coloured Jacobian differences (ModelOde): with

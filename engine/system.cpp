@@ -271,7 +271,8 @@ namespace railsim::engine {
 
 ModelOde::ModelOde(const Model& model, Data& data)
     : model_(model), data_(data), pattern_(jacobian_pattern(model)), xp_(model.n_states), fp_(model.n_states),
-      h_(model.n_states), recorded_x_(model.n_states) {
+      h_(model.n_states), recorded_x_(model.n_states), recorded_warm_(data.approach_warm_start),
+      latest_warm_(data.approach_warm_start), f0_(model.n_states) {
   // The states a wheelset's contact reads: its own (positions, rates, spin
   // perturbation) and its track's; in the lateral model also every state the
   // forces of the elements on the wheelset read (its wheel loads follow from
@@ -302,6 +303,7 @@ ModelOde::ModelOde(const Model& model, Data& data)
 }
 
 bool ModelOde::rhs(double t, const double* x, double* xdot) {
+  recorded_warm_ = data_.approach_warm_start;  // (the same size: no allocation)
   data_.record_contact = true;
   recorded_ = engine::rhs(model_, data_, t, x, xdot);
   data_.record_contact = false;
@@ -352,17 +354,22 @@ bool ModelOde::coloured_differences(double t, const double* x, const double* fx,
   for (int j = 0; j < n; ++j) h_[std::size_t(j)] = 1e-7 * std::max(1.0, std::abs(x[j])) + 1e-9;
   // Each colour solves again only the contacts of the wheelsets whose states
   // it perturbs; the others replay the evaluation at (t, x) (the integrator's
-  // last one, as a rule; else it is made here). The evaluations here start
-  // their contact solves cold (Data::warm_start): each is a function of its
-  // state alone, the same to the bit as a plain evaluation there.
-  struct ColdStarts {
+  // last one, as a rule; else it is made here, and the differences are taken
+  // from it). Every colour's contact solves start from the warm starts the
+  // recorded evaluation started from (Data::approach_warm_start), so that the
+  // differences are those of one function of the state, to the bit; the
+  // latest warm starts are restored after.
+  const double* f0 = fx;
+  if (!(recorded_ && t == recorded_t_ && std::equal(x, x + n, recorded_x_.begin()))) {
+    if (!rhs(t, x, f0_.data())) return false;
+    f0 = f0_.data();
+  }
+  latest_warm_ = data_.approach_warm_start;
+  struct RestoreWarmStarts {
     Data& d;
-    bool was;
-    ~ColdStarts() { d.warm_start = was; }
-  } cold{data_, data_.warm_start};
-  data_.warm_start = false;
-  if (!(recorded_ && t == recorded_t_ && std::equal(x, x + n, recorded_x_.begin())) && !rhs(t, x, fp_.data()))
-    return false;
+    const std::vector<double>& latest;
+    ~RestoreWarmStarts() { d.approach_warm_start = latest; }
+  } restore{data_, latest_warm_};
   const std::size_t nw = model_.wheelsets.size();
   for (int c = 0; c < p.colors; ++c) {
     std::copy(x, x + n, xp_.begin());
@@ -374,6 +381,7 @@ bool ModelOde::coloured_differences(double t, const double* x, const double* fx,
       }
     if (!any) continue;
     data_.reuse_contact = &reuse_[std::size_t(c) * nw];
+    data_.approach_warm_start = recorded_warm_;
     const bool ok = engine::rhs(model_, data_, t, xp_.data(), fp_.data());
     data_.reuse_contact = nullptr;
     if (!ok) return false;
@@ -382,7 +390,7 @@ bool ModelOde::coloured_differences(double t, const double* x, const double* fx,
       for (int k = p.colptr[std::size_t(j)]; k < p.colptr[std::size_t(j) + 1]; ++k) {
         const int i = p.rowind[std::size_t(k)];
         const double v = p.kinematic_row[std::size_t(i)] ? (p.kinematic_col[std::size_t(i)] == j ? 1.0 : 0.0)
-                                                         : (fp_[std::size_t(i)] - fx[i]) / h_[std::size_t(j)];
+                                                         : (fp_[std::size_t(i)] - f0[i]) / h_[std::size_t(j)];
         put(k, i, j, v);
       }
     }

@@ -71,6 +71,11 @@ class ModelOde final : public OdeSystem {
   bool recorded_ = false;
   double recorded_t_ = 0.0;
   std::vector<double> recorded_x_;
+  // Data::approach_warm_start before the recorded evaluation (every colour's
+  // solves start there, as the recorded one did: the differences are then
+  // those of one function of the state) and the latest (restored after).
+  std::vector<double> recorded_warm_, latest_warm_;
+  std::vector<double> f0_;  // the evaluation at (t, x) when made here
 };
 
 }  // namespace railsim::engine

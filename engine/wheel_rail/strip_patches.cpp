@@ -314,15 +314,20 @@ double strip_approach_for_load(const contact::StripSet& s, double Q, double phi_
     w_filled = w;
   };
   // Start: the caller's warm start (this wheel's approach above its smallest
-  // gap at the last solve), else 0.1 mm above that gap.
+  // gap at the last solve, taken within [1 nm, 1 mm]), else 0.1 mm above that
+  // gap.
   const double inf = std::numeric_limits<double>::infinity();
   double lo = vmin, hi = inf, dV = 0.0;
-  double w = vmin + (warm_start && *warm_start > 0.0 ? *warm_start : 1e-4);
+  double w = vmin + (warm_start && *warm_start > 0.0 ? std::clamp(*warm_start, 1e-9, 1e-3) : 1e-4);
+  bool solved = false;  // to the tolerance (not stopped by the bracket's width or the evaluation count)
   for (int it = 0; it < 100; ++it) {
     double V;
     vertical(w, V, dV);
     const double f = V - Q;
-    if (std::abs(f) <= 1e-10 * Q) break;
+    if (std::abs(f) <= 1e-10 * Q) {
+      solved = true;
+      break;
+    }
     // Near enough that the Newton step's remainder, about f^2 / (6 V) for a
     // Hertzian V ~ (w - w0)^{3/2}, lies below a third of the tolerance: the
     // last step is taken on the linearised shares (p is linear in w, the
@@ -334,6 +339,7 @@ double strip_approach_for_load(const contact::StripSet& s, double Q, double phi_
       for (int q = pa; q < pb; ++q) x.W[q] = cp[q] > 0.0 ? std::max(0.0, x.W[q] + d * x.dW[q]) : 0.0;
       w += d;
       w_filled = w;
+      solved = true;
       break;
     }
     if (f > 0.0) {
@@ -363,7 +369,8 @@ double strip_approach_for_load(const contact::StripSet& s, double Q, double phi_
       const double w0 = w - 1.5 * V / dV;
       next = w0 + (w - w0) * std::cbrt((Q / V) * (Q / V));
     }
-    if (!(next > lo && next < hi)) next = hi < inf ? 0.5 * (lo + hi) : vmin + 2.0 * (std::max(w, lo) - vmin);
+    if (!(next > lo && next < hi))
+      next = hi < inf ? 0.5 * (lo + hi) : vmin + 2.0 * std::max(std::max(w, lo) - vmin, 1e-9);
     w = next;
     if (hi - lo < 1e-15) break;
   }
@@ -372,7 +379,7 @@ double strip_approach_for_load(const contact::StripSet& s, double Q, double phi_
     vertical(w, V, dV);
   }
   loads_from_shares(s, std::max(0, pa - 1), std::min(n, pb + 1), x, out, true, shape);
-  if (warm_start) *warm_start = w - vmin;
+  if (warm_start && solved) *warm_start = w - vmin;  // (an unsolved one would mislead the next start)
   return w;
 }
 

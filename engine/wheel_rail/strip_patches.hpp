@@ -59,10 +59,13 @@ void strip_loads(const contact::StripSet& strips, double w, double dphi_side, do
 
 // The vertical approach w at which the wheel carries the vertical load Q
 // (dphi = 0: the lateral model's roll is the rigid pose's), and the loads there;
-// solved to 1e-10 Q. warm_start (optional, in and out): the approach above the
-// wheel's smallest strip gap, where the solve starts (<= 0: 0.1 mm) and what
-// it found (as MuJoCo's mjData::qacc_warmstart: the same wheel's last solution
-// starts the next; the result then depends on it within the tolerance only).
+// solved to 1e-10 Q (unless the bracket narrows to 1e-15 m or 100 evaluations
+// pass first: out.vertical then tells what the loads carry). warm_start
+// (optional, in and out): the approach above the wheel's smallest strip gap,
+// where the solve starts (<= 0: 0.1 mm; else within [1 nm, 1 mm]) and, when
+// solved to the tolerance, what it found (as MuJoCo's mjData::qacc_warmstart:
+// the same wheel's last solution starts the next; the result then depends on
+// it within the tolerance only).
 double strip_approach_for_load(const contact::StripSet& strips, double Q, double phi_side, double Es, StripLoads& out,
                                PatchShape shape = PatchShape::hertz, double* warm_start = nullptr);
 

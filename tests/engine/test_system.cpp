@@ -2,6 +2,7 @@
 // static weight share) and no drift in steady running on straight, level,
 // perfect track; the bogie alone likewise; the coloured Jacobian's contact
 // replay.
+#include <algorithm>
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -88,8 +89,12 @@ TEST_CASE("bogie under a fixed car body: frame weight shared by primary and seco
 // full model's only the wheelset), on profiles with yaw and a flexible track
 // (curve_twist) and on the Cooperrider car's geometry table; also when the
 // integrator's last evaluation was at another state (the records are then
-// made again at the Jacobian's state).
+// made again at the Jacobian's state). The lateral model's load-to-approach
+// solves start warm (Data::approach_warm_start, here from an evaluation at
+// another state): the plain differences start every evaluation, the base
+// included, where the Jacobian's base evaluation started.
 TEST_CASE("coloured Jacobian with contact replay equals plain coloured differences", "[engine][system][jacobian]") {
+  int warm_cases = 0;
   for (const char* file : {"scenarios/manchester_coach_curve_twist.yaml", "scenarios/cooperrider_car_dytsi.yaml"})
     for (const char* model : {"lateral", "full"}) {
       INFO(file << ", " << model << " wheelset model");
@@ -113,37 +118,50 @@ TEST_CASE("coloured Jacobian with contact replay equals plain coloured differenc
       const engine::JacobianPattern& p = ode.sparsity();
       Eigen::VectorXd fx(n), fother(n), xother = x;
       xother[0] += 1e-4;
+      REQUIRE(ode.rhs(t, xother.data(), fother.data()));  // warm starts from another state
+      const std::vector<double> start_x = d.approach_warm_start;
+      warm_cases += std::any_of(start_x.begin(), start_x.end(), [](double v) { return v > 0.0; });
       REQUIRE(ode.rhs(t, x.data(), fx.data()));
-      std::vector<double> replayed(std::size_t(p.nonzeros())), again(replayed.size()), plain(replayed.size());
+      std::vector<double> replayed(std::size_t(p.nonzeros())), again(replayed.size());
       REQUIRE(ode.sparse_jacobian(t, x.data(), fx.data(), replayed.data()));
       REQUIRE(ode.rhs(t, xother.data(), fother.data()));  // the last evaluation elsewhere
+      const std::vector<double> start_again = d.approach_warm_start;
       REQUIRE(ode.sparse_jacobian(t, x.data(), fx.data(), again.data()));
       // Plain coloured differences, every contact solved, on a Data of its own,
-      // its solves started cold as the Jacobian's are (Data::warm_start).
-      engine::Data d2(sc.model);
-      d2.warm_start = false;
-      Eigen::VectorXd xp(n), fp(n);
-      for (int c = 0; c < p.colors; ++c) {
-        xp = x;
-        for (int j = 0; j < n; ++j)
-          if (p.color[std::size_t(j)] == c) xp[j] += 1e-7 * std::max(1.0, std::abs(x[j])) + 1e-9;
-        REQUIRE(engine::rhs(sc.model, d2, t, xp.data(), fp.data()));
-        for (int j = 0; j < n; ++j) {
-          if (p.color[std::size_t(j)] != c) continue;
-          for (int k = p.colptr[std::size_t(j)]; k < p.colptr[std::size_t(j) + 1]; ++k) {
-            const int i = p.rowind[std::size_t(k)];
-            plain[std::size_t(k)] = p.kinematic_row[std::size_t(i)]
-                                        ? (p.kinematic_col[std::size_t(i)] == j ? 1.0 : 0.0)
-                                        : (fp[i] - fx[i]) / (1e-7 * std::max(1.0, std::abs(x[j])) + 1e-9);
+      // each evaluation started from the warm starts `start`.
+      auto plain_jacobian = [&](const std::vector<double>& start, std::vector<double>& plain) {
+        plain.assign(replayed.size(), 0.0);
+        engine::Data d2(sc.model);
+        Eigen::VectorXd xp(n), fp(n), f0(n);
+        d2.approach_warm_start = start;
+        REQUIRE(engine::rhs(sc.model, d2, t, x.data(), f0.data()));
+        for (int c = 0; c < p.colors; ++c) {
+          xp = x;
+          for (int j = 0; j < n; ++j)
+            if (p.color[std::size_t(j)] == c) xp[j] += 1e-7 * std::max(1.0, std::abs(x[j])) + 1e-9;
+          d2.approach_warm_start = start;
+          REQUIRE(engine::rhs(sc.model, d2, t, xp.data(), fp.data()));
+          for (int j = 0; j < n; ++j) {
+            if (p.color[std::size_t(j)] != c) continue;
+            for (int k = p.colptr[std::size_t(j)]; k < p.colptr[std::size_t(j) + 1]; ++k) {
+              const int i = p.rowind[std::size_t(k)];
+              plain[std::size_t(k)] = p.kinematic_row[std::size_t(i)]
+                                          ? (p.kinematic_col[std::size_t(i)] == j ? 1.0 : 0.0)
+                                          : (fp[i] - f0[i]) / (1e-7 * std::max(1.0, std::abs(x[j])) + 1e-9);
+            }
           }
         }
-      }
+      };
+      std::vector<double> plain, plain_again;
+      plain_jacobian(start_x, plain);
+      plain_jacobian(start_again, plain_again);
       int differ = 0, contact_rows = 0;
       for (std::size_t k = 0; k < plain.size(); ++k) {
-        differ += replayed[k] != plain[k] || again[k] != plain[k];
+        differ += replayed[k] != plain[k] || again[k] != plain_again[k];
         contact_rows += plain[k] != 0.0;
       }
       CHECK(differ == 0);
       CHECK(contact_rows > n);
     }
+  CHECK(warm_cases > 0);  // the lateral model on profiles
 }
