@@ -344,18 +344,11 @@ double strip_approach_for_load(const contact::StripSet& s, double Q, double phi_
     }
     if (f > 0.0) {
       // The first upper bound: below it only strips penetrated there can be
-      // (p grows with w); the passes run on those and one neighbour each side.
-      if (hi == inf) {
-        int a = n, b = -1;
-        for (int q = 0; q < n; ++q)
-          if (cp[q] > 0.0) {
-            a = std::min(a, q);
-            b = q;
-          }
-        if (b >= 0) {
-          q0 = std::max(0, a - 1);
-          q1 = std::min(n, b + 2);
-        }
+      // (p grows with w), [pa, pb) of this pass over every strip; the passes
+      // run on those and one neighbour each side.
+      if (hi == inf && pa < pb) {
+        q0 = std::max(0, pa - 1);
+        q1 = std::min(n, pb + 1);
       }
       hi = w;
     } else {
